@@ -1,0 +1,107 @@
+// bezel/image.hpp — coverage masks: non-owning views into caller memory, an owning A8 mask, and
+// gray PNG files.
+//
+// Pixel (x, y) is the unit square [x, x+1] × [y, y+1]; y points DOWN (row 0 is the top row).
+// A view's `stride` is the distance between the starts of two rows, in ELEMENTS of the pixel type
+// (bytes for MaskView, floats for FloatMaskView). It may exceed the width (a sub-rectangle of a
+// glyph atlas) and may be negative (bottom-up memory). Views never own or free their memory.
+//
+// Only this module sees libpng. RGB(A) images and compositing are not here yet.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bezel/expected.hpp"
+
+namespace bezel {
+
+// Largest width or height of an image bezel reads or allocates, in pixels. A PNG claiming more is
+// rejected before any pixel memory is allocated.
+inline constexpr int kMaxImageDim = 1 << 15;
+
+// 8-bit alpha (0 = empty, 255 = fully covered), writable.
+struct MaskView {
+    std::uint8_t* data = nullptr;
+    int width = 0, height = 0;
+    std::ptrdiff_t stride = 0;  // bytes from one row to the next
+
+    std::uint8_t* row(int y) const { return data + static_cast<std::ptrdiff_t>(y) * stride; }
+    std::uint8_t& at(int x, int y) const { return row(y)[x]; }
+    // The sub-rectangle [x, x+w) × [y, y+h). Precondition: it lies inside this view.
+    MaskView sub(int x, int y, int w, int h) const { return {row(y) + x, w, h, stride}; }
+};
+
+// Read-only 8-bit alpha.
+struct ConstMaskView {
+    const std::uint8_t* data = nullptr;
+    int width = 0, height = 0;
+    std::ptrdiff_t stride = 0;
+
+    ConstMaskView() = default;
+    ConstMaskView(const std::uint8_t* d, int w, int h, std::ptrdiff_t s)
+        : data(d), width(w), height(h), stride(s) {}
+    ConstMaskView(const MaskView& v)  // NOLINT: a writable view is readable
+        : data(v.data), width(v.width), height(v.height), stride(v.stride) {}
+    const std::uint8_t* row(int y) const { return data + static_cast<std::ptrdiff_t>(y) * stride; }
+    std::uint8_t at(int x, int y) const { return row(y)[x]; }
+};
+
+// Float coverage in [0, 1], writable. `stride` counts floats, not bytes.
+struct FloatMaskView {
+    float* data = nullptr;
+    int width = 0, height = 0;
+    std::ptrdiff_t stride = 0;  // floats from one row to the next
+
+    float* row(int y) const { return data + static_cast<std::ptrdiff_t>(y) * stride; }
+    float& at(int x, int y) const { return row(y)[x]; }
+};
+
+// An owning A8 mask, rows packed (stride == width). A value type: copying copies the pixels.
+class Mask {
+public:
+    Mask() = default;
+    // A zeroed mask. Precondition: 0 ≤ width, height ≤ kMaxImageDim (checked by the callers that
+    // take sizes from input, e.g. read_png_gray).
+    Mask(int width, int height)
+        : width_(width), height_(height),
+          pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0) {}
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    MaskView view() { return {pixels_.data(), width_, height_, width_}; }
+    ConstMaskView view() const { return {pixels_.data(), width_, height_, width_}; }
+    std::uint8_t& at(int x, int y) { return pixels_[index(x, y)]; }
+    std::uint8_t at(int x, int y) const { return pixels_[index(x, y)]; }
+    const std::vector<std::uint8_t>& pixels() const { return pixels_; }
+
+    bool operator==(const Mask& o) const {
+        return width_ == o.width_ && height_ == o.height_ && pixels_ == o.pixels_;
+    }
+    bool operator!=(const Mask& o) const { return !(*this == o); }
+
+private:
+    std::size_t index(int x, int y) const {
+        return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+               static_cast<std::size_t>(x);
+    }
+    int width_ = 0, height_ = 0;
+    std::vector<std::uint8_t> pixels_;
+};
+
+// Copies a view into a new owning mask.
+Mask to_mask(ConstMaskView view);
+
+// Writes an 8-bit grayscale PNG (value = coverage, 0 black). Errors name the file: it cannot be
+// created, or libpng failed while writing it. An empty (0×0) mask is an error: PNG has no such
+// image.
+Status write_png_gray(const std::string& file, ConstMaskView mask);
+
+// Reads a PNG as 8-bit gray. Gray 1/2/4/8/16-bit are converted to 8 bits; RGB is converted to
+// gray with libpng's default weights; an alpha channel is dropped (a mask file is its gray
+// values). Errors name the file: unreadable, not a PNG, corrupt, or larger than kMaxImageDim.
+Expected<Mask> read_png_gray(const std::string& file);
+
+}  // namespace bezel
