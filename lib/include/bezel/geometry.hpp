@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace bezel {
 
@@ -49,9 +50,14 @@ using Point = Vec2;
 
 constexpr Vec2 operator*(double s, Vec2 v) { return v * s; }
 
-// Linear interpolation a + (b − a)·t, exact at t = 0 and t = 1.
+// Linear interpolation a + (b − a)·t. Exact at t = 0 and t = 1, and exact when a == b.
+// Why two branches: the one-sided form a + (b − a)·1 can miss b (a = 1e20, b = 1 gives 0), so
+// each half measures from its nearer end; de Casteljau's split points then land exactly on the
+// control points at t = 0 and t = 1.
 constexpr Vec2 lerp(Vec2 a, Vec2 b, double t) {
-    return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+    if (t < 0.5) return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
+    double u = 1.0 - t;  // exact for t in [0.5, 2] (Sterbenz), so t = 1 gives u = 0
+    return {b.x - (b.x - a.x) * u, b.y - (b.y - a.y) * u};
 }
 inline double distance(Point a, Point b) { return (b - a).length(); }
 
@@ -124,5 +130,40 @@ struct Affine {
                std::isfinite(e) && std::isfinite(f);
     }
 };
+
+// ---- Real roots of quadratics and cubics ------------------------------------------------------
+//
+// Contract shared by the solvers below:
+// - They return the number of DISTINCT real roots written to `roots`, in increasing order.
+// - Roots of magnitude above kMaxRootMagnitude are not reported (they only arise when the leading
+//   coefficient is below ~2⁻³⁴⁰ of the largest one: such a polynomial is, to double precision,
+//   of lower degree, and its other roots are still found).
+// - An identically zero polynomial (every x is a root) reports 0 roots; so does any non-finite
+//   coefficient. Neither case is an error for the callers (bounding boxes, intersections).
+// - Scale-invariant: coefficients are first scaled by a power of two (exactly), so 1e-200 and
+//   1e+200 inputs behave like unit ones.
+// - Accuracy: a simple root is returned to within a few ulps (relative) of the exact root of the
+//   given double coefficients. Roots closer together than about √ε·|root| (ε = 2⁻⁵²) cannot be
+//   told apart from a double root once the coefficients are rounded, and are returned as one
+//   root; a double root comes back with relative error ~√ε, a triple root ~∛ε — this is the
+//   conditioning of the problem, not of the method.
+inline constexpr double kMaxRootMagnitude = 0x1p340;  // ≈ 2.2e102
+
+// Real roots of a·x² + b·x + c. Works for any a, including 0 (linear) and a tiny relative to b
+// (one root goes to infinity; the other stays accurate). Method: Kahan's fma discriminant and the
+// cancellation-free pair x₁ = q/a, x₂ = c/q with q = −(b + sign(b)·√Δ)/2 (the "citardauq" form).
+int solve_quadratic(double a, double b, double c, double roots[2]);
+
+// Real roots of a·x³ + b·x² + c·x + d, any a (a = 0 gives the quadratic's roots). Method:
+// critical points from solve_quadratic split the line into monotone pieces, each searched by
+// bracketed Newton iteration with bisection fallback (Yuksel, "High-Performance Polynomial Root
+// Finding for Graphics", HPG 2022), so every root is polished to full precision and the work is
+// bounded (at most ~130 evaluations per root).
+int solve_cubic(double a, double b, double c, double d, double roots[3]);
+
+// As above, keeping only roots in [t_min, t_max] (closed interval), still sorted and distinct.
+int solve_quadratic_in(double a, double b, double c, double t_min, double t_max, double roots[2]);
+int solve_cubic_in(double a, double b, double c, double d, double t_min, double t_max,
+                   double roots[3]);
 
 }  // namespace bezel
