@@ -1,0 +1,69 @@
+// Whole-path operations that keep the verb/point layout: transform, reverse, boxes, finiteness.
+#include <algorithm>
+#include <iterator>
+
+#include "bezel/path.hpp"
+
+namespace bezel {
+
+void Path::transform(const Affine& m) {
+    for (Point& p : points_) p = m * p;
+}
+
+Path Path::transformed(const Affine& m) const {
+    Path out = *this;
+    out.transform(m);
+    return out;
+}
+
+bool Path::is_finite() const {
+    return std::all_of(points_.begin(), points_.end(), [](Point p) { return p.is_finite(); });
+}
+
+// Reversing a contour is reversing two slices. Its points, Move point first, read
+//   P₀ | a₁… | a₂… | … | aₖ…   (each verb's points end with its end point)
+// and read backwards they are exactly the points of the reversed verbs in reversed order: each
+// verb's control points come out reversed and its end point becomes the previous verb's start.
+// So the reversed contour is Move(last point), the drawing verbs in reverse order, the point
+// slice reversed, and the Close (if any) kept at the end.
+Path Path::reversed() const {
+    Path out;
+    out.verbs_.reserve(verbs_.size());
+    out.points_.reserve(points_.size());
+    std::size_t vi = 0, pi = 0;
+    while (vi < verbs_.size()) {
+        // verbs_[vi] is a Move (builder invariant); find the end of its contour.
+        std::size_t v_end = vi + 1, p_end = pi + 1;
+        bool closed = false;
+        while (v_end < verbs_.size() && verbs_[v_end] != Verb::Move) {
+            switch (verbs_[v_end]) {
+                case Verb::Line: p_end += 1; break;
+                case Verb::Quad: p_end += 2; break;
+                case Verb::Cubic: p_end += 3; break;
+                case Verb::Close: closed = true; break;
+                case Verb::Move: break;
+            }
+            ++v_end;
+        }
+        std::size_t draw_end = closed ? v_end - 1 : v_end;  // the Close is last when present
+        auto at = [](auto& v, std::size_t i) { return v.begin() + static_cast<std::ptrdiff_t>(i); };
+        out.verbs_.push_back(Verb::Move);
+        std::reverse_copy(at(verbs_, vi + 1), at(verbs_, draw_end), std::back_inserter(out.verbs_));
+        if (closed) out.verbs_.push_back(Verb::Close);
+        std::reverse_copy(at(points_, pi), at(points_, p_end), std::back_inserter(out.points_));
+        vi = v_end;
+        pi = p_end;
+    }
+    return out;
+}
+
+Rect Path::control_box() const {
+    Rect box = Rect::empty();
+    for (const PathSeg& s : segments()) {
+        int n = s.kind == SegKind::Line ? 2 : s.kind == SegKind::Quad ? 3 : 4;
+        for (int i = 0; i < n; ++i) box = box.union_with(s.p[i]);
+    }
+    return box;
+}
+
+}  // namespace bezel
