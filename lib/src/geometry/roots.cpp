@@ -111,13 +111,19 @@ double bisect_ordered(double lo, double hi) {
 }
 
 // The root of p in (lo, hi), where p is monotone and p(lo), p(hi) are non-zero with opposite
-// signs. Newton's step when it lands inside the bracket and at least halves the previous step,
-// ordered bisection otherwise (the rtsafe strategy of Numerical Recipes §9.4); the bracket shrinks
-// every iteration, so this ends in at most ~130 evaluations.
+// signs. Newton's step when it lands inside the bracket and at least halves the previous step
+// (the rtsafe strategy of Numerical Recipes §9.4), ordered bisection otherwise. Newton converges
+// quadratically once close, but far from the root it can crawl (a step that exactly halves each
+// time, as on x² far out); so after kMaxNewtonRun Newton steps in a row without converging, one
+// bisection is forced. The bracket's ordered width halves at every bisection, so the work is
+// bounded by 64 bisections with kMaxNewtonRun Newton steps between them; typically < 10 in all.
+constexpr int kMaxNewtonRun = 8;
+
 double bracketed_root(const Cubic& p, double lo, double hi, bool f_lo_negative) {
-    double x = 0.5 * (lo + hi);  // no overflow: |lo|, |hi| ≤ 2³⁴⁰
+    double x = bisect_ordered(lo, hi);  // the middle in binades: right for spans like [−2³⁴⁰, 1]
     double prev_step = hi - lo;
-    for (int iter = 0; iter < 200; ++iter) {
+    int newton_run = 0;
+    for (int iter = 0; iter < 64 * (kMaxNewtonRun + 1) + 2; ++iter) {
         double fx = p.f(x);
         if (fx == 0.0) return x;
         if ((fx < 0.0) == f_lo_negative) lo = x; else hi = x;
@@ -128,13 +134,16 @@ double bracketed_root(const Cubic& p, double lo, double hi, bool f_lo_negative) 
         double dfx = p.df(x);
         double xn = dfx != 0.0 ? x - fx / dfx : lo;
         double step = xn - x;
-        if (xn > lo && xn < hi && std::fabs(step) <= 0.5 * std::fabs(prev_step)) {
+        if (newton_run < kMaxNewtonRun && xn > lo && xn < hi &&
+            std::fabs(step) <= 0.5 * std::fabs(prev_step)) {
+            ++newton_run;
             prev_step = step;
             x = xn;
             // Newton converges quadratically near a simple root: a step this small means x is
             // already correct to the last bit or two.
             if (std::fabs(step) <= 2.0 * kEps * std::fabs(x)) return x;
         } else {
+            newton_run = 0;
             x = bisect_ordered(lo, hi);
             prev_step = hi - lo;
         }
@@ -185,9 +194,10 @@ int solve_cubic(double a, double b, double c, double d, double roots[3]) {
     double xs[4], fs[4];
     int k = 0;
     xs[k++] = -bound;
+    // solve_quadratic, not quadratic_scaled: p′'s coefficients need their own normalisation
+    // (with p.a ~ 1e-270 and p.c ~ 1e-90, as for roots near 1e90, b² would underflow).
     double crit[2];
-    int nc = quadratic_scaled(3.0 * p.a, 2.0 * p.b, p.c, crit);
-    std::sort(crit, crit + nc);
+    int nc = solve_quadratic(3.0 * p.a, 2.0 * p.b, p.c, crit);
     for (int i = 0; i < nc; ++i)
         if (crit[i] > -bound && crit[i] < bound && crit[i] > xs[k - 1]) xs[k++] = crit[i];
     xs[k++] = bound;
