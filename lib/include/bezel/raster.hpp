@@ -1,0 +1,95 @@
+// bezel/raster.hpp — anti-aliased coverage rasterization of filled polygons and paths.
+//
+// Coverage is EXACT AREA: a pixel's value is the area of the pixel square covered by the fill,
+// computed analytically from the polygon's edges (signed area and cover per cell, the
+// libart / FreeType "smooth" / font-rs formulation), not by supersampling. For a path, the only
+// approximation is flattening, whose distance bound the caller chooses (`tolerance_px`).
+//
+// Coordinates: pixels, y DOWN. Pixel (x, y) of a target is the square [x, x+1] × [y, y+1]; a
+// polygon point p lands at p + origin in target pixels (a fractional origin positions a glyph
+// at a subpixel offset). Any affine transform goes into the path convenience or into the
+// polylines themselves.
+//
+// Clipping is exact: parts of the fill outside the target are dropped, and edges LEFT of the
+// target still contribute their cover, so a shape that starts left of the target renders inside
+// it as it would in a larger target. Coordinates far outside the target, up to the largest
+// finite double, are clipped in double precision without overflow; a NaN or infinite coordinate
+// is an Error and leaves the target untouched.
+//
+// Threading: a Rasterizer holds reusable scratch memory and must not be used by two threads at
+// once; separate Rasterizers are independent and may run on separate threads.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "bezel/expected.hpp"
+#include "bezel/flatten.hpp"
+#include "bezel/geometry.hpp"
+#include "bezel/image.hpp"
+#include "bezel/path.hpp"
+
+namespace bezel {
+
+// How winding numbers become coverage.
+//   NonZero: coverage = min(|accumulated signed area|, 1)
+//   EvenOdd: coverage = triangle wave of the accumulated area with period 2, so a region wound
+//            twice (an inner loop drawn in the same direction) is empty.
+// Both use plain area accumulation: where two contours OVERLAP inside one pixel with the same
+// orientation, the partial pixel is over-counted (clamped at 1) — FreeType's default behaviour.
+enum class FillRule : std::uint8_t { NonZero, EvenOdd };
+
+// Largest target width or height, in pixels. A larger target is an Error.
+inline constexpr int kMaxBitmapDim = 16384;
+// Most line segments one fill may have (polyline points, after flattening for paths). More is an
+// Error, checked before any work: a hostile or runaway input meets this wall instead of the
+// memory limit. 4M segments is ~200× the most complex glyph of a CJK font at 512 px.
+inline constexpr std::size_t kMaxEdges = std::size_t{1} << 22;
+// The scratch accumulation buffer never exceeds this many floats (1 MiB); taller fills are
+// processed in horizontal bands. Not a limit on input: it bounds memory, not what can be drawn.
+inline constexpr std::size_t kMaxBandCells = std::size_t{1} << 18;
+
+class Rasterizer {
+public:
+    Rasterizer() = default;
+    Rasterizer(const Rasterizer&) = delete;             // scratch memory is not shared by accident
+    Rasterizer& operator=(const Rasterizer&) = delete;
+    Rasterizer(Rasterizer&&) noexcept = default;
+    Rasterizer& operator=(Rasterizer&&) noexcept = default;
+
+    // Fills the closed polygons `lines` (each contour closed implicitly) into `target`, writing
+    // EVERY pixel of the target (0 where nothing covers it: clearing is part of the call), as
+    // 8-bit alpha round(coverage·255). Errors, each leaving the target unchanged: a target
+    // dimension negative or > kMaxBitmapDim, a null target with nonzero size, more than
+    // kMaxEdges segments, contour_ends inconsistent with points, a NaN or infinite point or
+    // origin. Allocates nothing once its scratch has grown to the largest target used.
+    Status fill(const Polylines& lines, FillRule rule, const MaskView& target, Vec2 origin = {});
+    // The same, writing float coverage in [0, 1] (not quantized).
+    Status fill(const Polylines& lines, FillRule rule, const FloatMaskView& target,
+                Vec2 origin = {});
+
+    // Flattens `path` mapped by `transform` (to target pixels) with `flatten_options` into a
+    // reused internal Polylines, then fills it as above. Errors as above, plus a transform that is
+    // not finite, and a path that would flatten to more than kMaxEdges segments (estimated by
+    // Wang's bound before flattening, so nothing is allocated for it).
+    Status fill_path(const Path& path, const Affine& transform, FillRule rule,
+                     const MaskView& target, const FlattenOptions& flatten_options = {});
+    Status fill_path(const Path& path, const Affine& transform, FillRule rule,
+                     const FloatMaskView& target, const FlattenOptions& flatten_options = {});
+
+    // Bytes of scratch memory currently held (for tests of the no-allocation promise).
+    std::size_t scratch_capacity_bytes() const;
+
+private:
+    template <typename View>
+    Status fill_impl(const Polylines& lines, FillRule rule, const View& target, Vec2 origin);
+    template <typename View>
+    Status fill_path_impl(const Path& path, const Affine& transform, FillRule rule,
+                          const View& target, const FlattenOptions& flatten_options);
+
+    std::vector<float> acc_;   // per-band cell deltas; all zero between calls (the sweep re-zeroes)
+    Polylines flattened_;      // fill_path's reused polylines
+};
+
+}  // namespace bezel

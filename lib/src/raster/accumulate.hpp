@@ -1,0 +1,96 @@
+// Private: drawing line segments as signed-area deltas into a dense accumulation band.
+//
+// The band is `rows` rows of `stride` floats (stride ≥ width + 2). After all edges are drawn,
+// the coverage of pixel (i, j) is the prefix sum acc[j][0] + … + acc[j][i] (see sweep.hpp).
+//
+// The maths (font-rs, after libart). Take one piece of an edge inside one pixel row, going down
+// by dy (signed: +dy downwards, −dy upwards — the winding direction) between x = xa and x = xb.
+// It adds to each pixel i of that row dy times the fraction of the pixel that lies to the RIGHT
+// of the piece; pixels wholly to the right get dy. If the piece lies inside one column i with
+// mean offset m = (xa + xb)/2 − i, pixel i gets dy·(1 − m) and every pixel after it gets dy, so
+// as DELTAS:  acc[i] += dy·(1 − m),  acc[i+1] += dy·m.
+// A piece crossing several columns is cut at each integer x into sub-pieces with dy_k =
+// dy·(width_k / (xb − xa)), each handled as above. Summed over a closed polygon, each row's
+// deltas add to zero past the polygon, and the prefix sum is the signed coverage (winding-number
+// weighted area) of each pixel.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace bezel::raster_detail {
+
+// Adds one in-row piece (xa → xb, vertical extent dy) to the deltas of one row.
+// Precondition: 0 ≤ xa, xb ≤ width, so indices ≤ width + 1 < stride.
+inline void draw_row_piece(float* row, double xa, double xb, double dy) {
+    if (xa > xb) std::swap(xa, xb);
+    const int i0 = static_cast<int>(xa);  // floor: xa ≥ 0
+    const int i1 = static_cast<int>(xb);
+    if (i0 == i1 || xb == static_cast<double>(i0 + 1)) {
+        // One column: m = mean offset inside the pixel.
+        const double m = 0.5 * (xa + xb) - i0;
+        row[i0] += static_cast<float>(dy * (1.0 - m));
+        row[i0 + 1] += static_cast<float>(dy * m);
+        return;
+    }
+    // Several columns. s = dy per unit of x. The first sub-piece has width w0 = (i0+1) − xa and
+    // mean offset 1 − w0/2, so it adds s·w0·(w0/2) to acc[i0] and s·w0·(1 − w0/2) to acc[i0+1].
+    // Each full column adds s/2 to itself and s/2 to the next; the last sub-piece (width w1 =
+    // xb − i1, mean offset w1/2) adds s·w1·(1 − w1/2) to acc[i1] and s·w1·(w1/2) to acc[i1+1].
+    const double s = dy / (xb - xa);
+    const double w0 = (i0 + 1) - xa;
+    const double d0 = s * w0;
+    row[i0] += static_cast<float>(d0 * (0.5 * w0));
+    double carry = d0 * (1.0 - 0.5 * w0);  // pending delta for the next column
+    const float half = static_cast<float>(0.5 * s);
+    for (int i = i0 + 1; i < i1; ++i) {
+        row[i] += static_cast<float>(carry) + half;
+        carry = 0.5 * s;
+    }
+    const double w1 = xb - i1;
+    const double d1 = s * w1;
+    row[i1] += static_cast<float>(carry + d1 * (1.0 - 0.5 * w1));
+    row[i1 + 1] += static_cast<float>(d1 * (0.5 * w1));
+}
+
+// Draws the edge (x0, y0) → (x1, y1) into the band.
+// Precondition: 0 ≤ x ≤ width and 0 ≤ y ≤ rows for both ends (the caller clips).
+inline void draw_line(float* acc, std::ptrdiff_t stride, double x0, double y0, double x1,
+                      double y1) {
+    if (y0 == y1) return;  // horizontal edges carry no cover
+    double dir = 1.0;
+    if (y0 > y1) {
+        std::swap(x0, x1);
+        std::swap(y0, y1);
+        dir = -1.0;
+    }
+    const double dxdy = (x1 - x0) / (y1 - y0);
+    const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
+    int j = static_cast<int>(y0);
+    const int jend = static_cast<int>(std::ceil(y1));
+    float* row = acc + static_cast<std::ptrdiff_t>(j) * stride;
+    double ya = y0, xa = x0;
+    for (; j < jend; ++j, row += stride) {
+        const double yb = std::min(y1, static_cast<double>(j + 1));
+        // Clamped to the edge's own x range: rounding must not push an index past the band.
+        const double xb = yb == y1 ? x1 : std::clamp(x0 + (yb - y0) * dxdy, xlo, xhi);
+        draw_row_piece(row, xa, xb, dir * (yb - ya));
+        ya = yb;
+        xa = xb;
+    }
+}
+
+// Clips the edge to the band [0, width] × [0, rows] and draws what remains.
+//   y: parts above or below the band cover nothing in it and are dropped.
+//   x: the edge is clamped POINTWISE into [0, width]. Exact for pixels inside: a pixel i in
+//      [0, width) gets the fraction clamp(i + 1 − x, 0, 1) of its square to the right of an edge
+//      point at x, which is unchanged when x < 0 becomes 0 (both 1) or x > width becomes width
+//      (both 0). So parts left of the band become a vertical edge at x = 0 (their cover still
+//      counts) and parts right of it a vertical edge at x = width, which touches no pixel.
+// Coordinates may be any finite doubles: interpolation uses halved differences, which cannot
+// overflow.
+void clip_and_draw_line(float* acc, std::ptrdiff_t stride, int width, int rows, double x0,
+                        double y0, double x1, double y1);
+
+}  // namespace bezel::raster_detail

@@ -1,0 +1,85 @@
+// Rasterizer::fill_path: flatten into reused polylines, then fill. The only new concern here is
+// the edge budget: a path under a huge scale would flatten into millions of segments, so the
+// count is bounded BEFORE flattening allocates anything.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "bezel/raster.hpp"
+
+namespace bezel {
+
+namespace {
+
+// Wang's formula: a Bézier of degree d flattened into n uniform steps deviates at most
+// d(d−1)/8 · M / n² from its polyline, M = max |Pᵢ − 2Pᵢ₊₁ + Pᵢ₊₂| (second differences of the
+// control points), so n = ⌈√(d(d−1)·M / (8·tol))⌉ steps suffice. Every flattening method meets
+// its tolerance with about this many segments or fewer (the uniform method uses exactly this),
+// so it is the estimate the budget is checked against.
+double wang_segments(const Point* p, int degree, const Affine& m, double tol) {
+    double max_dd = 0.0;
+    for (int i = 0; i + 2 <= degree; ++i) {
+        Vec2 dd = m.apply_vector(p[i] - 2.0 * p[i + 1] + p[i + 2]);
+        max_dd = std::max(max_dd, dd.length());
+    }
+    const double n = std::ceil(std::sqrt(degree * (degree - 1) * max_dd / (8.0 * tol)));
+    // A NaN control point is flatten_checked's to report, with its index; count it as one.
+    return std::isnan(n) ? 1.0 : n;
+}
+
+// Estimated segments of the flattened path, saturating: the caller only compares with kMaxEdges.
+double estimate_segments(const Path& path, const Affine& m, double tol) {
+    const std::vector<Point>& pts = path.points();
+    std::size_t pi = 0;
+    double total = 0.0;
+    const double per_curve_cap = static_cast<double>(kMaxSegmentsPerCurve);
+    for (Verb v : path.verbs()) {
+        switch (v) {
+            case Verb::Move: total += 1; pi += 1; break;
+            case Verb::Line: total += 1; pi += 1; break;
+            case Verb::Quad:
+                total += std::min(per_curve_cap, std::max(1.0, wang_segments(&pts[pi - 1], 2, m, tol)));
+                pi += 2;
+                break;
+            case Verb::Cubic:
+                total += std::min(per_curve_cap, std::max(1.0, wang_segments(&pts[pi - 1], 3, m, tol)));
+                pi += 3;
+                break;
+            case Verb::Close: total += 1; break;
+        }
+        if (!(total <= static_cast<double>(kMaxEdges))) return total;  // NaN counts as too many
+    }
+    return total;
+}
+
+}  // namespace
+
+template <typename View>
+Status Rasterizer::fill_path_impl(const Path& path, const Affine& transform, FillRule rule,
+                                  const View& target, const FlattenOptions& options) {
+    if (!transform.is_finite()) return Error{"fill_path: transform is not finite"};
+    const double tol = std::max(options.tolerance_px, kMinFlattenTolerancePx);
+    const double estimate = estimate_segments(path, transform, tol);
+    if (!(estimate <= static_cast<double>(kMaxEdges)))
+        return Error{"fill_path: path would flatten to about " +
+                     (std::isfinite(estimate) ? std::to_string(static_cast<long long>(estimate))
+                                              : std::string("infinitely many")) +
+                     " segments at tolerance " + std::to_string(options.tolerance_px) +
+                     " px, more than kMaxEdges (" + std::to_string(kMaxEdges) + ")"};
+    flattened_.clear();
+    if (Status s = flatten_checked(path, transform, options, flattened_); !s)
+        return Error{"fill_path: " + s.error().message};
+    return fill_impl(flattened_, rule, target, Vec2{});
+}
+
+Status Rasterizer::fill_path(const Path& path, const Affine& transform, FillRule rule,
+                             const MaskView& target, const FlattenOptions& flatten_options) {
+    return fill_path_impl(path, transform, rule, target, flatten_options);
+}
+
+Status Rasterizer::fill_path(const Path& path, const Affine& transform, FillRule rule,
+                             const FloatMaskView& target, const FlattenOptions& flatten_options) {
+    return fill_path_impl(path, transform, rule, target, flatten_options);
+}
+
+}  // namespace bezel

@@ -1,0 +1,205 @@
+// Rasterizer: input checks, the pixel box the fill can touch, bands, and the sweep into the
+// caller's target.
+//
+// Pipeline for one fill:
+//   1. Validate (sizes, contour_ends, finiteness) before touching the target.
+//   2. Box = integer bounds of the polygon, intersected with the target. Pixels outside the box
+//      get 0 (memset). Left of the box the polygon has nothing; edges left of the TARGET fold
+//      into column 0 of the box through the clip (accumulate.hpp).
+//   3. The box is processed in bands of rows whose deltas fit in kMaxBandCells floats: walk all
+//      edges straight from the point array (no edge list, no per-segment callback), clip to the
+//      band, draw deltas; then sweep each band row into the target.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <type_traits>
+
+#include "bezel/raster.hpp"
+#include "raster/accumulate.hpp"
+#include "raster/sweep.hpp"
+
+namespace bezel {
+
+namespace rd = raster_detail;
+
+namespace {
+
+template <typename View>
+Status check_target(const View& t) {
+    if (t.width < 0 || t.height < 0 || t.width > kMaxBitmapDim || t.height > kMaxBitmapDim)
+        return Error{"raster target " + std::to_string(t.width) + "x" + std::to_string(t.height) +
+                     " is outside 0.." + std::to_string(kMaxBitmapDim) + " (kMaxBitmapDim)"};
+    if (t.data == nullptr && t.width > 0 && t.height > 0)
+        return Error{"raster target " + std::to_string(t.width) + "x" + std::to_string(t.height) +
+                     " has no pixel memory (null data)"};
+    return ok_status();
+}
+
+Status check_polylines(const Polylines& lines) {
+    if (lines.points.size() > kMaxEdges)
+        return Error{"polylines have " + std::to_string(lines.points.size()) +
+                     " segments, more than kMaxEdges (" + std::to_string(kMaxEdges) + ")"};
+    std::size_t prev = 0;
+    for (std::size_t end : lines.contour_ends) {
+        if (end < prev || end > lines.points.size())
+            return Error{"polylines: contour end " + std::to_string(end) +
+                         " is out of order or past the " + std::to_string(lines.points.size()) +
+                         " points"};
+        prev = end;
+    }
+    if (prev != lines.points.size())
+        return Error{"polylines: " + std::to_string(lines.points.size() - prev) +
+                     " points after the last contour end"};
+    return ok_status();
+}
+
+struct Bounds {
+    double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
+    bool finite = true;
+};
+
+Bounds bounds_of(const std::vector<Point>& pts) {
+    Bounds b;
+    // x·0 is 0 for finite x and NaN for NaN or ±inf, so one test at the end checks every point
+    // without a branch in the loop.
+    double poison = 0.0;
+    for (const Point& p : pts) {
+        b.x0 = std::min(b.x0, p.x);
+        b.x1 = std::max(b.x1, p.x);
+        b.y0 = std::min(b.y0, p.y);
+        b.y1 = std::max(b.y1, p.y);
+        poison += p.x * 0.0 + p.y * 0.0;
+    }
+    b.finite = poison == 0.0;
+    return b;
+}
+
+// Integer pixel range [lo, hi) of [a, b] + offset clamped to [0, n]. Computed in double: a
+// coordinate of 1e300 clamps before any conversion to int.
+void pixel_range(double a, double b, double offset, int n, int& lo, int& hi) {
+    double fa = std::floor(a + offset), fb = std::ceil(b + offset);
+    lo = static_cast<int>(std::clamp(fa, 0.0, static_cast<double>(n)));
+    hi = static_cast<int>(std::clamp(fb, 0.0, static_cast<double>(n)));
+}
+
+template <typename T>
+void clear_pixels(T* p, int n) {
+    if (n > 0) std::memset(p, 0, sizeof(T) * static_cast<std::size_t>(n));
+}
+
+// The sweep kernel for an output pixel type.
+inline void sweep_row(const rd::SweepKernels& k, FillRule rule, float* acc, int n,
+                      std::uint8_t* out) {
+    k.u8[static_cast<int>(rule)](acc, n, out);
+}
+inline void sweep_row(const rd::SweepKernels& k, FillRule rule, float* acc, int n, float* out) {
+    k.f32[static_cast<int>(rule)](acc, n, out);
+}
+
+// Every edge of every contour (closing edges included) into one band whose top-left pixel is
+// (bx, by) of the target.
+void draw_band(const Polylines& lines, Vec2 origin, int bx, int by, int width, int rows,
+               float* acc, std::ptrdiff_t stride) {
+    const double ox = origin.x - bx, oy = origin.y - by;
+    const double W = width, H = rows;
+    const Point* pts = lines.points.data();
+    std::size_t start = 0;
+    for (std::size_t end : lines.contour_ends) {
+        if (end - start < 2) {  // a point contour encloses nothing
+            start = end;
+            continue;
+        }
+        double px = pts[end - 1].x + ox, py = pts[end - 1].y + oy;  // closing edge first
+        bool p_in = px >= 0.0 && px <= W && py >= 0.0 && py <= H;
+        for (std::size_t k = start; k < end; ++k) {
+            const double qx = pts[k].x + ox, qy = pts[k].y + oy;
+            const bool q_in = qx >= 0.0 && qx <= W && qy >= 0.0 && qy <= H;
+            if (p_in && q_in) {
+                rd::draw_line(acc, stride, px, py, qx, qy);
+            } else {
+                rd::clip_and_draw_line(acc, stride, width, rows, px, py, qx, qy);
+            }
+            px = qx;
+            py = qy;
+            p_in = q_in;
+        }
+        start = end;
+    }
+}
+
+}  // namespace
+
+template <typename View>
+Status Rasterizer::fill_impl(const Polylines& lines, FillRule rule, const View& target,
+                             Vec2 origin) {
+    if (Status s = check_target(target); !s) return s;
+    if (Status s = check_polylines(lines); !s) return s;
+    if (!origin.is_finite()) return Error{"raster origin is not finite (NaN or infinity)"};
+    const Bounds b = bounds_of(lines.points);
+    if (!b.finite) return Error{"polylines contain a NaN or infinite coordinate"};
+
+    using Pixel = std::remove_reference_t<decltype(*target.data)>;
+    const int W = target.width, H = target.height;
+    if (W == 0 || H == 0) return ok_status();
+
+    int bx0 = 0, bx1 = 0, by0 = 0, by1 = 0;
+    if (!lines.points.empty()) {
+        pixel_range(b.x0, b.x1, origin.x, W, bx0, bx1);
+        pixel_range(b.y0, b.y1, origin.y, H, by0, by1);
+    }
+    if (bx0 >= bx1 || by0 >= by1) {
+        bx0 = bx1 = 0;
+        by0 = by1 = 0;
+    }
+    // Outside the box: 0.
+    for (int y = 0; y < H; ++y) {
+        Pixel* row = target.row(y);
+        if (y < by0 || y >= by1) {
+            clear_pixels(row, W);
+        } else {
+            clear_pixels(row, bx0);
+            clear_pixels(row + bx1, W - bx1);
+        }
+    }
+    if (bx0 >= bx1) return ok_status();
+
+    const int box_w = bx1 - bx0, box_h = by1 - by0;
+    // Two guard cells: a piece at x = width writes acc[width] and acc[width + 1].
+    const std::ptrdiff_t stride = box_w + 2;
+    const int band_rows =
+        std::max(1, std::min(box_h, static_cast<int>(kMaxBandCells / static_cast<std::size_t>(stride))));
+    const std::size_t cells = static_cast<std::size_t>(band_rows) * static_cast<std::size_t>(stride);
+    if (acc_.size() < cells) acc_.resize(cells, 0.0f);  // grows only; the sweep keeps it zeroed
+
+    const rd::SweepKernels& kernels = rd::best_kernels();
+    for (int y = by0; y < by1; y += band_rows) {
+        const int rows = std::min(band_rows, by1 - y);
+        draw_band(lines, origin, bx0, y, box_w, rows, acc_.data(), stride);
+        for (int r = 0; r < rows; ++r)
+            sweep_row(kernels, rule, acc_.data() + r * stride, box_w, target.row(y + r) + bx0);
+    }
+    return ok_status();
+}
+
+// path_fill.cpp calls these.
+template Status Rasterizer::fill_impl<MaskView>(const Polylines&, FillRule, const MaskView&, Vec2);
+template Status Rasterizer::fill_impl<FloatMaskView>(const Polylines&, FillRule,
+                                                     const FloatMaskView&, Vec2);
+
+Status Rasterizer::fill(const Polylines& lines, FillRule rule, const MaskView& target,
+                        Vec2 origin) {
+    return fill_impl(lines, rule, target, origin);
+}
+
+Status Rasterizer::fill(const Polylines& lines, FillRule rule, const FloatMaskView& target,
+                        Vec2 origin) {
+    return fill_impl(lines, rule, target, origin);
+}
+
+std::size_t Rasterizer::scratch_capacity_bytes() const {
+    return acc_.capacity() * sizeof(float) + flattened_.points.capacity() * sizeof(Point) +
+           flattened_.contour_ends.capacity() * sizeof(std::size_t);
+}
+
+}  // namespace bezel

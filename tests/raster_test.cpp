@@ -1,0 +1,473 @@
+// Tests of bezel/raster.hpp: exact-area properties, the fast path against the reference oracle
+// (lib/src/raster/reference.hpp), clipping, hostile input, limits, SIMD kernels against scalar.
+//
+// Tolerances: the fast path accumulates in float, the reference in double. Float coverage is
+// compared within 1e-4 (float rounding of sums of a few hundred deltas of magnitude ≤ 1 stays
+// far below it); 8-bit output within 1 level (a float difference of 1e-6 can flip the rounding
+// of a value that lies on a .5 boundary; more than one level would be a real error).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "bezel/raster.hpp"
+#include "raster/reference.hpp"
+#include "raster/sweep.hpp"
+
+namespace bezel {
+namespace {
+
+using raster_detail::reference_coverage;
+using raster_detail::reference_u8;
+
+constexpr double kFloatTol = 1e-4;
+
+Polylines polygon(std::initializer_list<std::initializer_list<Point>> contours) {
+    Polylines p;
+    for (const auto& c : contours) {
+        for (Point q : c) p.points.push_back(q);
+        p.contour_ends.push_back(p.points.size());
+    }
+    return p;
+}
+
+Polylines rect(double x0, double y0, double x1, double y1) {
+    return polygon({{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}});
+}
+
+struct FloatImage {
+    int w, h;
+    std::vector<float> px;
+    FloatImage(int w_, int h_) : w(w_), h(h_), px(static_cast<std::size_t>(w_) * h_, -1.0f) {}
+    FloatMaskView view() { return {px.data(), w, h, w}; }
+    float at(int x, int y) const { return px[static_cast<std::size_t>(y) * w + x]; }
+};
+
+// Random polygon: `n` points in [lo, hi]², any shape (self-intersecting, degenerate), split
+// into 1..3 contours.
+Polylines random_polygon(std::mt19937& rng, int n, double lo, double hi) {
+    std::uniform_real_distribution<double> u(lo, hi);
+    std::uniform_int_distribution<int> contours(1, 3);
+    Polylines p;
+    int k = contours(rng);
+    for (int c = 0; c < k; ++c) {
+        for (int i = 0; i < n; ++i) p.points.push_back({u(rng), u(rng)});
+        p.contour_ends.push_back(p.points.size());
+    }
+    return p;
+}
+
+// A simple (non-self-intersecting) polygon, star-shaped around `c`: vertex k at an angle in
+// [2πk/n, 2π(k+1)/n), so consecutive angles differ by less than 4π/n ≤ 4π/5 < π (n ≥ 5), which
+// keeps `c` inside and the boundary from crossing itself.
+Polylines random_star(std::mt19937& rng, Point c, double rmin, double rmax, int n) {
+    std::uniform_real_distribution<double> jitter(0.0, 1.0), rad(rmin, rmax);
+    Polylines p;
+    for (int k = 0; k < n; ++k) {
+        double t = 2.0 * M_PI * (k + jitter(rng)) / n;
+        double r = rad(rng);
+        p.points.push_back({c.x + r * std::cos(t), c.y + r * std::sin(t)});
+    }
+    p.contour_ends.push_back(p.points.size());
+    return p;
+}
+
+double shoelace_area(const Polylines& p) {
+    double area = 0.0;
+    std::size_t start = 0;
+    for (std::size_t end : p.contour_ends) {
+        for (std::size_t k = start; k < end; ++k) {
+            Point a = p.points[k], b = p.points[k + 1 < end ? k + 1 : start];
+            area += a.cross(b);
+        }
+        start = end;
+    }
+    return 0.5 * area;
+}
+
+// --- Exact-area properties -----------------------------------------------------------------
+
+TEST(RasterProperties, RectangleCoverageIsExactOverlapArea) {
+    std::mt19937 rng(101);
+    std::uniform_real_distribution<double> u(-3.0, 27.0);
+    Rasterizer r;
+    for (int trial = 0; trial < 2000; ++trial) {
+        double x0 = u(rng), x1 = u(rng), y0 = u(rng), y1 = u(rng);
+        FloatImage img(24, 24);
+        ASSERT_TRUE(r.fill(rect(x0, y0, x1, y1), FillRule::NonZero, img.view()).ok());
+        double lx = std::min(x0, x1), hx = std::max(x0, x1);
+        double ly = std::min(y0, y1), hy = std::max(y0, y1);
+        for (int y = 0; y < 24; ++y) {
+            for (int x = 0; x < 24; ++x) {
+                double ox = std::max(0.0, std::min(hx, x + 1.0) - std::max(lx, double(x)));
+                double oy = std::max(0.0, std::min(hy, y + 1.0) - std::max(ly, double(y)));
+                ASSERT_NEAR(img.at(x, y), ox * oy, kFloatTol)
+                    << "trial " << trial << " pixel " << x << "," << y;
+            }
+        }
+    }
+}
+
+TEST(RasterProperties, EvenOddCancelsInnerLoop) {
+    // Outer and inner squares drawn in the SAME direction: winding 2 inside the inner one.
+    Polylines p = polygon({{{2, 2}, {18, 2}, {18, 18}, {2, 18}}, {{6, 6}, {14, 6}, {14, 14}, {6, 14}}});
+    Rasterizer r;
+    Mask eo(20, 20), nz(20, 20);
+    ASSERT_TRUE(r.fill(p, FillRule::EvenOdd, eo.view()).ok());
+    ASSERT_TRUE(r.fill(p, FillRule::NonZero, nz.view()).ok());
+    for (int y = 0; y < 20; ++y) {
+        for (int x = 0; x < 20; ++x) {
+            bool outer = x >= 2 && x < 18 && y >= 2 && y < 18;
+            bool inner = x >= 6 && x < 14 && y >= 6 && y < 14;
+            EXPECT_EQ(eo.at(x, y), outer && !inner ? 255 : 0) << x << "," << y;
+            EXPECT_EQ(nz.at(x, y), outer ? 255 : 0) << x << "," << y;
+        }
+    }
+}
+
+TEST(RasterProperties, EvenOddTriangleWaveOnFractionalInnerLoop) {
+    // Inner square with fractional edges: winding 2 in the partially covered pixels must give
+    // 1 − (fraction), not min(1 + fraction, 1).
+    Polylines p = polygon({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{3.25, 3}, {7, 3}, {7, 7}, {3.25, 7}}});
+    Rasterizer r;
+    FloatImage img(10, 10);
+    ASSERT_TRUE(r.fill(p, FillRule::EvenOdd, img.view()).ok());
+    EXPECT_NEAR(img.at(3, 4), 0.25, kFloatTol);  // 3/4 of the pixel wound twice
+    EXPECT_NEAR(img.at(1, 4), 1.0, kFloatTol);
+    EXPECT_NEAR(img.at(5, 5), 0.0, kFloatTol);
+}
+
+TEST(RasterProperties, CoverageIsInvariantUnderWholePixelTranslation) {
+    std::mt19937 rng(202);
+    Rasterizer r;
+    for (int trial = 0; trial < 1000; ++trial) {
+        Polylines p = random_polygon(rng, 3 + trial % 8, 0.0, 16.0);
+        int dx = static_cast<int>(rng() % 9), dy = static_cast<int>(rng() % 9);
+        Vec2 frac{(rng() % 64) / 64.0, (rng() % 64) / 64.0};
+        FillRule rule = trial % 2 ? FillRule::EvenOdd : FillRule::NonZero;
+        FloatImage a(26, 26), b(26, 26);
+        ASSERT_TRUE(r.fill(p, rule, a.view(), frac).ok());
+        ASSERT_TRUE(r.fill(p, rule, b.view(), frac + Vec2{double(dx), double(dy)}).ok());
+        for (int y = 0; y + dy < 26; ++y)
+            for (int x = 0; x + dx < 26; ++x)
+                ASSERT_NEAR(a.at(x, y), b.at(x + dx, y + dy), kFloatTol) << "trial " << trial;
+    }
+}
+
+TEST(RasterProperties, TotalCoverageEqualsPolygonArea) {
+    std::mt19937 rng(303);
+    Rasterizer r;
+    for (int trial = 0; trial < 2000; ++trial) {
+        Polylines p = random_star(rng, {20.0, 20.0}, 1.0, 18.0, 5 + trial % 40);
+        FloatImage img(40, 40);
+        ASSERT_TRUE(r.fill(p, FillRule::NonZero, img.view()).ok());
+        double sum = 0.0;
+        for (float v : img.px) sum += v;
+        // Float accumulation: ~1e-6 relative per pixel, 1600 pixels.
+        ASSERT_NEAR(sum, std::fabs(shoelace_area(p)), 2e-3) << "trial " << trial;
+    }
+}
+
+// --- The fast path against the reference -----------------------------------------------------
+
+TEST(RasterReference, FastPathMatchesReferenceOnRandomPolygons) {
+    std::mt19937 rng(404);
+    Rasterizer r;
+    int worst_u8 = 0;
+    double worst_f = 0.0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        int w = 1 + static_cast<int>(rng() % 48), h = 1 + static_cast<int>(rng() % 48);
+        // Points reach outside the target on every side, so clipping is exercised.
+        Polylines p = random_polygon(rng, 3 + trial % 12, -10.0, 58.0);
+        FillRule rule = trial % 2 ? FillRule::EvenOdd : FillRule::NonZero;
+        Vec2 origin{(rng() % 100) / 37.0 - 1.0, (rng() % 100) / 41.0 - 1.0};
+        FloatImage f(w, h);
+        Mask m(w, h);
+        ASSERT_TRUE(r.fill(p, rule, f.view(), origin).ok());
+        ASSERT_TRUE(r.fill(p, rule, m.view(), origin).ok());
+        std::vector<double> ref = reference_coverage(p, rule, w, h, origin);
+        std::vector<unsigned char> ref8 = reference_u8(p, rule, w, h, origin);
+        for (std::size_t i = 0; i < ref.size(); ++i) {
+            worst_f = std::max(worst_f, std::fabs(f.px[i] - ref[i]));
+            worst_u8 = std::max(worst_u8, std::abs(int(m.pixels()[i]) - int(ref8[i])));
+        }
+        ASSERT_LE(worst_f, kFloatTol) << "trial " << trial;
+        ASSERT_LE(worst_u8, 1) << "trial " << trial;
+    }
+    RecordProperty("worst_float_error", std::to_string(worst_f));
+}
+
+TEST(RasterReference, MultiBandTallTargetMatchesReference) {
+    // 1000 px wide: a band holds kMaxBandCells / 1002 = 261 rows, so 700 rows take 3 bands.
+    std::mt19937 rng(505);
+    Rasterizer r;
+    for (int trial = 0; trial < 6; ++trial) {
+        Polylines p = random_polygon(rng, 12, -50.0, 1050.0);
+        FillRule rule = trial % 2 ? FillRule::EvenOdd : FillRule::NonZero;
+        Mask m(1000, 700);
+        ASSERT_TRUE(r.fill(p, rule, m.view(), {0.3, -0.7}).ok());
+        std::vector<unsigned char> ref = reference_u8(p, rule, 1000, 700, {0.3, -0.7});
+        for (std::size_t i = 0; i < ref.size(); ++i)
+            ASSERT_LE(std::abs(int(m.pixels()[i]) - int(ref[i])), 1) << "trial " << trial << " i " << i;
+    }
+}
+
+TEST(RasterReference, NearHorizontalAndNearVerticalEdgesMatchReference) {
+    // Slivers: slopes of 1e-7 and 1e7, where a division by a tiny difference would lose
+    // precision.
+    Rasterizer r;
+    const double e = 1e-7;
+    std::vector<Polylines> cases = {
+        polygon({{{0.5, 3.0}, {30.5, 3.0 + e}, {30.5, 9.0}, {0.5, 9.0}}}),
+        polygon({{{3.0, 0.5}, {3.0 + e, 30.5}, {9.0, 30.5}, {9.0, 0.5}}}),
+        polygon({{{2.9999999, 1.0}, {3.0000001, 20.0}, {12.0, 20.0}, {12.0, 1.0}}}),
+        polygon({{{1.0, 1.0}, {31.0, 1.5}, {1.0, 2.0}}}),
+    };
+    for (std::size_t c = 0; c < cases.size(); ++c) {
+        FloatImage f(32, 32);
+        ASSERT_TRUE(r.fill(cases[c], FillRule::NonZero, f.view()).ok());
+        std::vector<double> ref = reference_coverage(cases[c], FillRule::NonZero, 32, 32, {});
+        for (std::size_t i = 0; i < ref.size(); ++i)
+            ASSERT_NEAR(f.px[i], ref[i], kFloatTol) << "case " << c << " pixel " << i;
+    }
+}
+
+// --- Clipping and hostile coordinates ------------------------------------------------------
+
+TEST(RasterClipping, EdgesLeftOfTargetStillContributeCover) {
+    // A square from x = −5 to 3.5: the target must show columns 0..2 full and column 3 half.
+    Rasterizer r;
+    FloatImage f(8, 8);
+    ASSERT_TRUE(r.fill(rect(-5, 1, 3.5, 6), FillRule::NonZero, f.view()).ok());
+    for (int y = 0; y < 8; ++y) {
+        double row = (y >= 1 && y < 6) ? 1.0 : 0.0;
+        for (int x = 0; x < 8; ++x) {
+            double expect = x < 3 ? row : x == 3 ? 0.5 * row : 0.0;
+            EXPECT_NEAR(f.at(x, y), expect, kFloatTol) << x << "," << y;
+        }
+    }
+}
+
+TEST(RasterClipping, WindowOfLargerRenderEqualsRenderOfWindow) {
+    std::mt19937 rng(606);
+    Rasterizer r;
+    for (int trial = 0; trial < 500; ++trial) {
+        Polylines p = random_polygon(rng, 3 + trial % 9, 0.0, 40.0);
+        FillRule rule = trial % 2 ? FillRule::EvenOdd : FillRule::NonZero;
+        FloatImage big(40, 40), win(15, 12);
+        int wx = static_cast<int>(rng() % 25), wy = static_cast<int>(rng() % 28);
+        ASSERT_TRUE(r.fill(p, rule, big.view()).ok());
+        ASSERT_TRUE(r.fill(p, rule, win.view(), {-double(wx), -double(wy)}).ok());
+        for (int y = 0; y < 12; ++y)
+            for (int x = 0; x < 15; ++x)
+                ASSERT_NEAR(win.at(x, y), big.at(x + wx, y + wy), kFloatTol) << "trial " << trial;
+    }
+}
+
+TEST(RasterClipping, HugeCoordinatesClipExactlyWithoutOverflow) {
+    Rasterizer r;
+    const double big = std::numeric_limits<double>::max();
+    // A rectangle from x = −DBL_MAX to 5.5 equals one from 0 to 5.5 inside the target.
+    FloatImage a(10, 10), b(10, 10);
+    ASSERT_TRUE(r.fill(rect(-big, 2, 5.5, 7.25), FillRule::NonZero, a.view()).ok());
+    ASSERT_TRUE(r.fill(rect(0, 2, 5.5, 7.25), FillRule::NonZero, b.view()).ok());
+    for (std::size_t i = 0; i < a.px.size(); ++i) ASSERT_NEAR(a.px[i], b.px[i], kFloatTol);
+    // Spanning ±DBL_MAX in both axes: the whole target is covered.
+    ASSERT_TRUE(r.fill(rect(-big, -big, big, big), FillRule::NonZero, a.view()).ok());
+    for (float v : a.px) ASSERT_NEAR(v, 1.0, kFloatTol);
+    // Random far-away triangles: never a crash, always coverage in [0, 1].
+    std::mt19937 rng(707);
+    std::uniform_real_distribution<double> expo(-300.0, 300.0);
+    for (int trial = 0; trial < 2000; ++trial) {
+        Polylines p;
+        for (int k = 0; k < 3; ++k) {
+            double sx = rng() % 2 ? 1 : -1, sy = rng() % 2 ? 1 : -1;
+            p.points.push_back({sx * std::pow(10.0, expo(rng)), sy * std::pow(10.0, expo(rng))});
+        }
+        p.contour_ends.push_back(3);
+        ASSERT_TRUE(r.fill(p, FillRule::NonZero, a.view(), {3.5, 4.5}).ok());
+        for (float v : a.px) ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << "trial " << trial;
+    }
+}
+
+TEST(RasterClipping, FarCoordinatesMatchReference) {
+    // Edges from ±1e8 crossing the target: clipped in double, compared with the oracle.
+    std::mt19937 rng(808);
+    std::uniform_real_distribution<double> far(-1e8, 1e8), near(0.0, 20.0);
+    Rasterizer r;
+    for (int trial = 0; trial < 300; ++trial) {
+        Polylines p = polygon({{{far(rng), near(rng)}, {near(rng), far(rng)}, {near(rng), near(rng)}}});
+        FloatImage f(20, 20);
+        ASSERT_TRUE(r.fill(p, FillRule::NonZero, f.view()).ok());
+        std::vector<double> ref = reference_coverage(p, FillRule::NonZero, 20, 20, {});
+        for (std::size_t i = 0; i < ref.size(); ++i)
+            ASSERT_NEAR(f.px[i], ref[i], 1e-3) << "trial " << trial;  // 1e8 in double: ~1e-8 px
+    }
+}
+
+// --- Errors and limits -----------------------------------------------------------------------
+
+TEST(RasterErrors, NanOrInfinityIsAnErrorAndLeavesTargetUntouched) {
+    Rasterizer r;
+    for (double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+        Mask m(5, 5);
+        m.at(2, 2) = 77;
+        Polylines p = polygon({{{1, 1}, {bad, 3}, {4, 4}}});
+        Status s = r.fill(p, FillRule::NonZero, m.view());
+        ASSERT_FALSE(s.ok());
+        EXPECT_NE(s.error().message.find("NaN"), std::string::npos) << s.error().message;
+        EXPECT_EQ(m.at(2, 2), 77);
+        EXPECT_FALSE(r.fill(rect(1, 1, 2, 2), FillRule::NonZero, m.view(), {bad, 0}).ok());
+        EXPECT_EQ(m.at(2, 2), 77);
+    }
+}
+
+TEST(RasterErrors, TargetLimitsAndBadContoursAreErrors) {
+    Rasterizer r;
+    std::uint8_t px[4] = {};
+    EXPECT_FALSE(r.fill(rect(0, 0, 1, 1), FillRule::NonZero,
+                        MaskView{px, kMaxBitmapDim + 1, 1, kMaxBitmapDim + 1}).ok());
+    EXPECT_FALSE(r.fill(rect(0, 0, 1, 1), FillRule::NonZero, MaskView{px, -1, 1, 1}).ok());
+    EXPECT_FALSE(r.fill(rect(0, 0, 1, 1), FillRule::NonZero, MaskView{nullptr, 2, 2, 2}).ok());
+    Polylines bad = rect(0, 0, 1, 1);
+    bad.contour_ends = {5};
+    EXPECT_FALSE(r.fill(bad, FillRule::NonZero, MaskView{px, 2, 2, 2}).ok());
+    bad.contour_ends = {2};  // two points after the last end
+    EXPECT_FALSE(r.fill(bad, FillRule::NonZero, MaskView{px, 2, 2, 2}).ok());
+    // Empty target and empty polylines are fine.
+    EXPECT_TRUE(r.fill(rect(0, 0, 1, 1), FillRule::NonZero, MaskView{nullptr, 0, 0, 0}).ok());
+    Mask m(3, 3);
+    m.at(1, 1) = 9;
+    EXPECT_TRUE(r.fill(Polylines{}, FillRule::NonZero, m.view()).ok());
+    EXPECT_EQ(m.at(1, 1), 0);  // clearing is part of the fill
+}
+
+TEST(RasterErrors, FillPathRefusesAnEdgeBudgetBeyondKMaxEdges) {
+    // 100 quarter circles at a scale of 1e13 px: each would need ~10⁷ segments at the default
+    // tolerance; even at flatten's per-curve cap (kMaxSegmentsPerCurve) that is 6.5M > kMaxEdges.
+    Path arcs;
+    arcs.move_to({1, 0});
+    for (int i = 0; i < 100; ++i) {
+        arcs.cubic_to({1, 0.55}, {0.55, 1}, {0, 1});
+        arcs.cubic_to({0.55, 1}, {1, 0.55}, {1, 0});
+    }
+    arcs.close();
+    Rasterizer r;
+    Mask m(16, 16);
+    Status s = r.fill_path(arcs, Affine::scale(1e13), FillRule::NonZero, m.view());
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.error().message.find("kMaxEdges"), std::string::npos) << s.error().message;
+    // Refused before flattening: nothing was allocated for it.
+    EXPECT_EQ(r.scratch_capacity_bytes(), 0u);
+    // A non-finite transform is an error too.
+    EXPECT_FALSE(r.fill_path(arcs, Affine::scale(std::nan("")), FillRule::NonZero, m.view()).ok());
+}
+
+// --- Targets with stride, float output, path filling, steady-state memory -------------------
+
+TEST(RasterTarget, RendersIntoAtlasSubViewWithoutTouchingNeighbours) {
+    Mask atlas(64, 32);
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 64; ++x) atlas.at(x, y) = 123;
+    Polylines p = polygon({{{1.3, 0.2}, {13.7, 4.1}, {6.2, 11.9}}});
+    Rasterizer r;
+    MaskView sub = atlas.view().sub(20, 10, 15, 13);
+    ASSERT_TRUE(r.fill(p, FillRule::NonZero, sub).ok());
+    Mask alone(15, 13);
+    ASSERT_TRUE(r.fill(p, FillRule::NonZero, alone.view()).ok());
+    for (int y = 0; y < 32; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            bool inside = x >= 20 && x < 35 && y >= 10 && y < 23;
+            EXPECT_EQ(atlas.at(x, y), inside ? alone.at(x - 20, y - 10) : 123) << x << "," << y;
+        }
+    }
+}
+
+TEST(RasterTarget, NegativeStrideRendersBottomUpMemory) {
+    Mask m(10, 10);
+    Polylines p = polygon({{{0, 0}, {10, 0}, {0, 10}}});
+    Rasterizer r;
+    // Row 0 of the view is the LAST row of the memory.
+    MaskView flipped{&m.at(0, 9), 10, 10, -10};
+    ASSERT_TRUE(r.fill(p, FillRule::NonZero, flipped).ok());
+    Mask direct(10, 10);
+    ASSERT_TRUE(r.fill(p, FillRule::NonZero, direct.view()).ok());
+    for (int y = 0; y < 10; ++y)
+        for (int x = 0; x < 10; ++x) EXPECT_EQ(m.at(x, 9 - y), direct.at(x, y));
+}
+
+TEST(RasterTarget, FillPathOfCircleCoversItsArea) {
+    // A circle of radius 20 px from four cubic arcs (k = 0.5522847498): the arcs deviate from the
+    // circle by 2.7e-4 relative, so the area is π·r²·(1 ± 6e-4), flattening adds < 0.1 px·perimeter.
+    const double k = 0.5522847498;
+    Path c;
+    c.move_to({1, 0});
+    c.cubic_to({1, k}, {k, 1}, {0, 1});
+    c.cubic_to({-k, 1}, {-1, k}, {-1, 0});
+    c.cubic_to({-1, -k}, {-k, -1}, {0, -1});
+    c.cubic_to({k, -1}, {1, -k}, {1, 0});
+    c.close();
+    Rasterizer r;
+    FloatImage img(50, 50);
+    Affine m = Affine::translate({25.25, 24.5}) * Affine::scale(20.0);
+    ASSERT_TRUE(r.fill_path(c, m, FillRule::NonZero, img.view()).ok());
+    double sum = 0.0;
+    for (float v : img.px) sum += v;
+    EXPECT_NEAR(sum, M_PI * 400.0, M_PI * 400.0 * 6e-4 + 0.1 * 2 * M_PI * 20.0);
+    EXPECT_NEAR(img.at(25, 24), 1.0, kFloatTol);
+    EXPECT_NEAR(img.at(2, 2), 0.0, kFloatTol);
+}
+
+TEST(RasterTarget, ReusedRasterizerStopsGrowingAfterTheLargestFill) {
+    std::mt19937 rng(909);
+    Rasterizer r;
+    Mask big(200, 200);
+    ASSERT_TRUE(r.fill(rect(-1, -1, 201, 201), FillRule::NonZero, big.view()).ok());
+    const std::size_t after_first = r.scratch_capacity_bytes();
+    for (int trial = 0; trial < 200; ++trial) {
+        int w = 1 + static_cast<int>(rng() % 200), h = 1 + static_cast<int>(rng() % 200);
+        Mask m(w, h);
+        ASSERT_TRUE(r.fill(random_polygon(rng, 10, -20, 220), FillRule::EvenOdd, m.view()).ok());
+        ASSERT_EQ(r.scratch_capacity_bytes(), after_first);
+    }
+}
+
+// --- Sweep kernels: SIMD against scalar ---------------------------------------------------------
+
+TEST(RasterKernels, SimdSweepsMatchScalarOnRandomRows) {
+    using namespace raster_detail;
+    std::vector<const SweepKernels*> kernels = {&sse2_kernels()};
+    if (avx2_kernels()) kernels.push_back(avx2_kernels());
+    std::mt19937 rng(1010);
+    std::uniform_real_distribution<float> delta(-1.0f, 1.0f);
+    for (int trial = 0; trial < 3000; ++trial) {
+        int n = 1 + static_cast<int>(rng() % 150);
+        std::vector<float> row(n + 2);
+        for (int i = 0; i < n; ++i) row[i] = rng() % 3 ? 0.0f : delta(rng) * 1.5f;
+        for (int rule = 0; rule < 2; ++rule) {
+            std::vector<float> a = row, sf(n), kf(n);
+            std::vector<std::uint8_t> s8(n), k8(n);
+            scalar_kernels().f32[rule](a.data(), n, sf.data());
+            a = row;
+            scalar_kernels().u8[rule](a.data(), n, s8.data());
+            for (const SweepKernels* k : kernels) {
+                std::vector<float> b = row;
+                k->f32[rule](b.data(), n, kf.data());
+                for (float v : b) ASSERT_EQ(v, 0.0f) << k->name << ": acc not re-zeroed";
+                b = row;
+                k->u8[rule](b.data(), n, k8.data());
+                for (int i = 0; i < n; ++i) {
+                    ASSERT_NEAR(kf[i], sf[i], 1e-5) << k->name << " n " << n << " i " << i;
+                    ASSERT_LE(std::abs(int(k8[i]) - int(s8[i])), 1) << k->name;
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace bezel
