@@ -23,9 +23,8 @@ double lerp_safe(double a, double b, double t) {
 
 }  // namespace
 
-void clip_and_draw_line(float* acc, std::ptrdiff_t stride, int width, int rows, double x0,
-                        double y0, double x1, double y1) {
-    const double W = width, H = rows;
+void clip_and_draw_line(const Band& band, double x0, double y0, double x1, double y1) {
+    const double W = band.width, H = band.rows;
     if (y0 == y1 || (y0 <= 0.0 && y1 <= 0.0) || (y0 >= H && y1 >= H)) return;
 
     // Clip in y, keeping the edge's direction (its winding sign).
@@ -38,12 +37,12 @@ void clip_and_draw_line(float* acc, std::ptrdiff_t stride, int width, int rows, 
     }
 
     if (x0 >= 0.0 && x0 <= W && x1 >= 0.0 && x1 <= W) {
-        draw_line(acc, stride, x0, y0, x1, y1);
+        draw_line(band, x0, y0, x1, y1);
         return;
     }
     if (x0 >= W && x1 >= W) return;  // right of the band: touches no pixel
     if (x0 <= 0.0 && x1 <= 0.0) {     // left of the band: its cover, as a vertical edge at x = 0
-        draw_line(acc, stride, 0.0, y0, 0.0, y1);
+        draw_line(band, 0.0, y0, 0.0, y1);
         return;
     }
 
@@ -67,9 +66,9 @@ void clip_and_draw_line(float* acc, std::ptrdiff_t stride, int width, int rows, 
         const double xm = 0.5 * a.x + 0.5 * b.x;
         if (xm >= W) continue;
         if (xm <= 0.0) {
-            draw_line(acc, stride, 0.0, a.y, 0.0, b.y);
+            draw_line(band, 0.0, a.y, 0.0, b.y);
         } else {
-            draw_line(acc, stride, std::clamp(a.x, 0.0, W), a.y, std::clamp(b.x, 0.0, W), b.y);
+            draw_line(band, std::clamp(a.x, 0.0, W), a.y, std::clamp(b.x, 0.0, W), b.y);
         }
     }
 }

@@ -1,7 +1,8 @@
 // Private: drawing line segments as signed-area deltas into a dense accumulation band.
 //
-// The band is `rows` rows of `stride` floats (stride ≥ width + 2). After all edges are drawn,
-// the coverage of pixel (i, j) is the prefix sum acc[j][0] + … + acc[j][i] (see sweep.hpp).
+// The band is `rows` rows of `stride` floats (stride = row_cells(width), see sweep.hpp), plus
+// one flag byte per block of kBlock cells that records "this block has deltas". After all edges
+// are drawn, the coverage of pixel (i, j) is the prefix sum acc[j][0] + … + acc[j][i].
 //
 // The maths (font-rs, after libart). Take one piece of an edge inside one pixel row, going down
 // by dy (signed: +dy downwards, −dy upwards — the winding direction) between x = xa and x = xb.
@@ -10,20 +11,41 @@
 // mean offset m = (xa + xb)/2 − i, pixel i gets dy·(1 − m) and every pixel after it gets dy, so
 // as DELTAS:  acc[i] += dy·(1 − m),  acc[i+1] += dy·m.
 // A piece crossing several columns is cut at each integer x into sub-pieces with dy_k =
-// dy·(width_k / (xb − xa)), each handled as above. Summed over a closed polygon, each row's
-// deltas add to zero past the polygon, and the prefix sum is the signed coverage (winding-number
-// weighted area) of each pixel.
+// s·width_k (s = dy/dx of the edge), each handled as above. Summed over a closed polygon, each
+// row's deltas add to zero past the polygon, and the prefix sum is the signed coverage
+// (winding-number weighted area) of each pixel.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+
+#include "raster/sweep.hpp"
 
 namespace bezel::raster_detail {
 
-// Adds one in-row piece (xa → xb, vertical extent dy) to the deltas of one row.
+struct Band {
+    float* acc;
+    std::uint8_t* flags;
+    std::ptrdiff_t stride;       // floats per row, row_cells(width)
+    std::ptrdiff_t flag_stride;  // bytes per row, row_blocks(width)
+    int width, rows;
+};
+
+// Marks the blocks holding cells i0..i1 (inclusive).
+inline void mark_cells(std::uint8_t* frow, int i0, int i1) {
+    const int b0 = i0 >> kBlockShift, b1 = i1 >> kBlockShift;
+    frow[b0] = 1;
+    frow[b1] = 1;
+    for (int b = b0 + 1; b < b1; ++b) frow[b] = 1;
+}
+
+// Adds one in-row piece (xa → xb, vertical extent dy) to the deltas of one row. `s` is the
+// edge's signed dy/|dx| (used only when the piece crosses a column boundary).
 // Precondition: 0 ≤ xa, xb ≤ width, so indices ≤ width + 1 < stride.
-inline void draw_row_piece(float* row, double xa, double xb, double dy) {
+inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb, double dy,
+                           double s) {
     if (xa > xb) std::swap(xa, xb);
     const int i0 = static_cast<int>(xa);  // floor: xa ≥ 0
     const int i1 = static_cast<int>(xb);
@@ -32,32 +54,32 @@ inline void draw_row_piece(float* row, double xa, double xb, double dy) {
         const double m = 0.5 * (xa + xb) - i0;
         row[i0] += static_cast<float>(dy * (1.0 - m));
         row[i0 + 1] += static_cast<float>(dy * m);
+        mark_cells(frow, i0, i0 + 1);
         return;
     }
-    // Several columns. s = dy per unit of x. The first sub-piece has width w0 = (i0+1) − xa and
-    // mean offset 1 − w0/2, so it adds s·w0·(w0/2) to acc[i0] and s·w0·(1 − w0/2) to acc[i0+1].
-    // Each full column adds s/2 to itself and s/2 to the next; the last sub-piece (width w1 =
-    // xb − i1, mean offset w1/2) adds s·w1·(1 − w1/2) to acc[i1] and s·w1·(w1/2) to acc[i1+1].
-    const double s = dy / (xb - xa);
+    // Several columns. The first sub-piece has width w0 = (i0+1) − xa and mean offset
+    // 1 − w0/2, so it adds s·w0·(w0/2) to acc[i0] and s·w0·(1 − w0/2) to acc[i0+1]. Each full
+    // column adds s/2 to itself and s/2 to the next; the last sub-piece (width w1 = xb − i1,
+    // mean offset w1/2) adds s·w1·(1 − w1/2) to acc[i1] and s·w1·(w1/2) to acc[i1+1].
     const double w0 = (i0 + 1) - xa;
     const double d0 = s * w0;
     row[i0] += static_cast<float>(d0 * (0.5 * w0));
     double carry = d0 * (1.0 - 0.5 * w0);  // pending delta for the next column
-    const float half = static_cast<float>(0.5 * s);
+    const double half = 0.5 * s;
     for (int i = i0 + 1; i < i1; ++i) {
-        row[i] += static_cast<float>(carry) + half;
-        carry = 0.5 * s;
+        row[i] += static_cast<float>(carry + half);
+        carry = half;
     }
     const double w1 = xb - i1;
     const double d1 = s * w1;
     row[i1] += static_cast<float>(carry + d1 * (1.0 - 0.5 * w1));
     row[i1 + 1] += static_cast<float>(d1 * (0.5 * w1));
+    mark_cells(frow, i0, i1 + 1);
 }
 
 // Draws the edge (x0, y0) → (x1, y1) into the band.
 // Precondition: 0 ≤ x ≤ width and 0 ≤ y ≤ rows for both ends (the caller clips).
-inline void draw_line(float* acc, std::ptrdiff_t stride, double x0, double y0, double x1,
-                      double y1) {
+inline void draw_line(const Band& band, double x0, double y0, double x1, double y1) {
     if (y0 == y1) return;  // horizontal edges carry no cover
     double dir = 1.0;
     if (y0 > y1) {
@@ -66,16 +88,19 @@ inline void draw_line(float* acc, std::ptrdiff_t stride, double x0, double y0, d
         dir = -1.0;
     }
     const double dxdy = (x1 - x0) / (y1 - y0);
+    const double s = x1 != x0 ? dir * (y1 - y0) / std::fabs(x1 - x0) : 0.0;
     const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
-    int j = static_cast<int>(y0);
-    const int jend = static_cast<int>(std::ceil(y1));
-    float* row = acc + static_cast<std::ptrdiff_t>(j) * stride;
+    int j = static_cast<int>(y0);  // floor, y0 ≥ 0
+    int jend = static_cast<int>(y1);
+    if (jend < y1) ++jend;          // ceil
+    float* row = band.acc + j * band.stride;
+    std::uint8_t* frow = band.flags + j * band.flag_stride;
     double ya = y0, xa = x0;
-    for (; j < jend; ++j, row += stride) {
+    for (; j < jend; ++j, row += band.stride, frow += band.flag_stride) {
         const double yb = std::min(y1, static_cast<double>(j + 1));
         // Clamped to the edge's own x range: rounding must not push an index past the band.
         const double xb = yb == y1 ? x1 : std::clamp(x0 + (yb - y0) * dxdy, xlo, xhi);
-        draw_row_piece(row, xa, xb, dir * (yb - ya));
+        draw_row_piece(row, frow, xa, xb, dir * (yb - ya), s);
         ya = yb;
         xa = xb;
     }
@@ -90,7 +115,6 @@ inline void draw_line(float* acc, std::ptrdiff_t stride, double x0, double y0, d
 //      counts) and parts right of it a vertical edge at x = width, which touches no pixel.
 // Coordinates may be any finite doubles: interpolation uses halved differences, which cannot
 // overflow.
-void clip_and_draw_line(float* acc, std::ptrdiff_t stride, int width, int rows, double x0,
-                        double y0, double x1, double y1);
+void clip_and_draw_line(const Band& band, double x0, double y0, double x1, double y1);
 
 }  // namespace bezel::raster_detail

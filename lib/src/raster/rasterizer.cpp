@@ -89,20 +89,20 @@ void clear_pixels(T* p, int n) {
 }
 
 // The sweep kernel for an output pixel type.
-inline void sweep_row(const rd::SweepKernels& k, FillRule rule, float* acc, int n,
-                      std::uint8_t* out) {
-    k.u8[static_cast<int>(rule)](acc, n, out);
+inline void sweep_row(const rd::SweepKernels& k, FillRule rule, float* acc, std::uint8_t* flags,
+                      int n, std::uint8_t* out) {
+    k.u8[static_cast<int>(rule)](acc, flags, n, out);
 }
-inline void sweep_row(const rd::SweepKernels& k, FillRule rule, float* acc, int n, float* out) {
-    k.f32[static_cast<int>(rule)](acc, n, out);
+inline void sweep_row(const rd::SweepKernels& k, FillRule rule, float* acc, std::uint8_t* flags,
+                      int n, float* out) {
+    k.f32[static_cast<int>(rule)](acc, flags, n, out);
 }
 
 // Every edge of every contour (closing edges included) into one band whose top-left pixel is
 // (bx, by) of the target.
-void draw_band(const Polylines& lines, Vec2 origin, int bx, int by, int width, int rows,
-               float* acc, std::ptrdiff_t stride) {
+void draw_band(const Polylines& lines, Vec2 origin, int bx, int by, const rd::Band& band) {
     const double ox = origin.x - bx, oy = origin.y - by;
-    const double W = width, H = rows;
+    const double W = band.width, H = band.rows;
     const Point* pts = lines.points.data();
     std::size_t start = 0;
     for (std::size_t end : lines.contour_ends) {
@@ -116,9 +116,9 @@ void draw_band(const Polylines& lines, Vec2 origin, int bx, int by, int width, i
             const double qx = pts[k].x + ox, qy = pts[k].y + oy;
             const bool q_in = qx >= 0.0 && qx <= W && qy >= 0.0 && qy <= H;
             if (p_in && q_in) {
-                rd::draw_line(acc, stride, px, py, qx, qy);
+                rd::draw_line(band, px, py, qx, qy);
             } else {
-                rd::clip_and_draw_line(acc, stride, width, rows, px, py, qx, qy);
+                rd::clip_and_draw_line(band, px, py, qx, qy);
             }
             px = qx;
             py = qy;
@@ -165,19 +165,24 @@ Status Rasterizer::fill_impl(const Polylines& lines, FillRule rule, const View& 
     if (bx0 >= bx1) return ok_status();
 
     const int box_w = bx1 - bx0, box_h = by1 - by0;
-    // Two guard cells: a piece at x = width writes acc[width] and acc[width + 1].
-    const std::ptrdiff_t stride = box_w + 2;
+    const std::ptrdiff_t stride = rd::row_cells(box_w);
+    const std::ptrdiff_t flag_stride = rd::row_blocks(box_w);
     const int band_rows =
         std::max(1, std::min(box_h, static_cast<int>(kMaxBandCells / static_cast<std::size_t>(stride))));
     const std::size_t cells = static_cast<std::size_t>(band_rows) * static_cast<std::size_t>(stride);
-    if (acc_.size() < cells) acc_.resize(cells, 0.0f);  // grows only; the sweep keeps it zeroed
+    const std::size_t flags = static_cast<std::size_t>(band_rows) * static_cast<std::size_t>(flag_stride);
+    // Grow only; the sweep leaves both all-zero, so no clearing here.
+    if (acc_.size() < cells) acc_.resize(cells, 0.0f);
+    if (flags_.size() < flags) flags_.resize(flags, 0);
 
     const rd::SweepKernels& kernels = rd::best_kernels();
     for (int y = by0; y < by1; y += band_rows) {
         const int rows = std::min(band_rows, by1 - y);
-        draw_band(lines, origin, bx0, y, box_w, rows, acc_.data(), stride);
+        const rd::Band band{acc_.data(), flags_.data(), stride, flag_stride, box_w, rows};
+        draw_band(lines, origin, bx0, y, band);
         for (int r = 0; r < rows; ++r)
-            sweep_row(kernels, rule, acc_.data() + r * stride, box_w, target.row(y + r) + bx0);
+            sweep_row(kernels, rule, acc_.data() + r * stride, flags_.data() + r * flag_stride,
+                      box_w, target.row(y + r) + bx0);
     }
     return ok_status();
 }
@@ -197,8 +202,11 @@ Status Rasterizer::fill(const Polylines& lines, FillRule rule, const FloatMaskVi
     return fill_impl(lines, rule, target, origin);
 }
 
+const char* raster_kernel_name() { return rd::best_kernels().name; }
+
 std::size_t Rasterizer::scratch_capacity_bytes() const {
-    return acc_.capacity() * sizeof(float) + flattened_.points.capacity() * sizeof(Point) +
+    return acc_.capacity() * sizeof(float) + flags_.capacity() +
+           flattened_.points.capacity() * sizeof(Point) +
            flattened_.contour_ends.capacity() * sizeof(std::size_t);
 }
 

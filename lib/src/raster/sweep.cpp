@@ -3,30 +3,26 @@
 
 #include <emmintrin.h>
 
+#include "raster/sweep_blocks.hpp"
+
 namespace bezel::raster_detail {
 
 namespace {
 
-template <FillRule R>
-void scalar_u8(float* acc, int n, std::uint8_t* out) {
+// The reference: every cell summed, flags only cleared.
+template <FillRule R, typename Out>
+void scalar_sweep(float* acc, std::uint8_t* flags, int n, Out* out) {
     float sum = 0.0f;
     for (int i = 0; i < n; ++i) {
         sum += acc[i];
-        acc[i] = 0.0f;
-        out[i] = coverage_u8(sum, R);
+        if constexpr (sizeof(Out) == 1) {
+            out[i] = coverage_u8(sum, R);
+        } else {
+            out[i] = coverage_of(sum, R);
+        }
     }
-    acc[n] = acc[n + 1] = 0.0f;
-}
-
-template <FillRule R>
-void scalar_f32(float* acc, int n, float* out) {
-    float sum = 0.0f;
-    for (int i = 0; i < n; ++i) {
-        sum += acc[i];
-        acc[i] = 0.0f;
-        out[i] = coverage_of(sum, R);
-    }
-    acc[n] = acc[n + 1] = 0.0f;
+    std::fill(acc, acc + row_cells(n), 0.0f);
+    std::fill(flags, flags + row_blocks(n), std::uint8_t{0});
 }
 
 // In-register inclusive prefix sum of 4 floats: x + (x << 1 lane) + (x << 2 lanes).
@@ -38,7 +34,6 @@ inline __m128 last4(__m128 x) { return _mm_shuffle_ps(x, x, 0xFF); }
 
 template <FillRule R>
 inline __m128 coverage4(__m128 a) {
-    const __m128 one = _mm_set1_ps(1.0f);
     __m128 v = _mm_andnot_ps(_mm_set1_ps(-0.0f), a);  // |a|
     if (R == FillRule::EvenOdd) {
         // v mod 2 = v − 2·trunc(v/2) (v ≥ 0, so trunc is floor), then the triangle min(v, 2 − v).
@@ -46,94 +41,81 @@ inline __m128 coverage4(__m128 a) {
         v = _mm_sub_ps(v, _mm_add_ps(q, q));
         v = _mm_min_ps(v, _mm_sub_ps(_mm_set1_ps(2.0f), v));
     }
-    return _mm_min_ps(v, one);
+    return _mm_min_ps(v, _mm_set1_ps(1.0f));
 }
 
-// Prefix sums of 16 deltas starting at acc, carried in `carry` (all lanes equal); zeroes them.
-inline void prefix16(float* acc, __m128& carry, __m128& a, __m128& b, __m128& c, __m128& d) {
-    a = prefix4(_mm_loadu_ps(acc));
-    b = prefix4(_mm_loadu_ps(acc + 4));
-    c = prefix4(_mm_loadu_ps(acc + 8));
-    d = prefix4(_mm_loadu_ps(acc + 12));
-    const __m128 z = _mm_setzero_ps();
-    _mm_storeu_ps(acc, z);
-    _mm_storeu_ps(acc + 4, z);
-    _mm_storeu_ps(acc + 8, z);
-    _mm_storeu_ps(acc + 12, z);
-    // Totals of the earlier vectors, off the carry's dependency chain.
-    const __m128 ta = last4(a);
-    const __m128 tab = _mm_add_ps(ta, last4(b));
-    const __m128 tabc = _mm_add_ps(tab, last4(c));
-    b = _mm_add_ps(b, ta);
-    c = _mm_add_ps(c, tab);
-    d = _mm_add_ps(d, tabc);
-    const __m128 before = carry;
-    carry = _mm_add_ps(carry, last4(d));  // the only add on the loop-carried chain
-    a = _mm_add_ps(a, before);
-    b = _mm_add_ps(b, before);
-    c = _mm_add_ps(c, before);
-    d = _mm_add_ps(d, before);
-}
+struct Sse2Block {
+    using Carry = __m128;
+    static Carry zero() { return _mm_setzero_ps(); }
+    static float first(Carry c) { return _mm_cvtss_f32(c); }
 
-template <FillRule R>
-void sse2_u8(float* acc, int n, std::uint8_t* out) {
-    __m128 carry = _mm_setzero_ps();
-    const __m128 k255 = _mm_set1_ps(255.0f);
-    int i = 0;
-    for (; i + 16 <= n; i += 16) {
-        __m128 a, b, c, d;
-        prefix16(acc + i, carry, a, b, c, d);
-        // round(255·f): cvtps uses the current rounding mode, round-to-nearest by default.
-        __m128i ia = _mm_cvtps_epi32(_mm_mul_ps(coverage4<R>(a), k255));
-        __m128i ib = _mm_cvtps_epi32(_mm_mul_ps(coverage4<R>(b), k255));
-        __m128i ic = _mm_cvtps_epi32(_mm_mul_ps(coverage4<R>(c), k255));
-        __m128i id = _mm_cvtps_epi32(_mm_mul_ps(coverage4<R>(d), k255));
-        __m128i bytes = _mm_packus_epi16(_mm_packs_epi32(ia, ib), _mm_packs_epi32(ic, id));
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), bytes);
+    // 16 cells as 4 vectors. The totals of the earlier vectors are added off the carry's
+    // dependency chain; the chain itself is one add per block.
+    static void prefix16(float* acc, Carry& carry, __m128 (&v)[4]) {
+        for (int k = 0; k < 4; ++k) {
+            v[k] = prefix4(_mm_loadu_ps(acc + 4 * k));
+            _mm_storeu_ps(acc + 4 * k, _mm_setzero_ps());
+        }
+        const __m128 t0 = last4(v[0]);
+        const __m128 t01 = _mm_add_ps(t0, last4(v[1]));
+        const __m128 t012 = _mm_add_ps(t01, last4(v[2]));
+        v[1] = _mm_add_ps(v[1], t0);
+        v[2] = _mm_add_ps(v[2], t01);
+        v[3] = _mm_add_ps(v[3], t012);
+        const __m128 before = carry;
+        carry = _mm_add_ps(carry, last4(v[3]));
+        for (int k = 0; k < 4; ++k) v[k] = _mm_add_ps(v[k], before);
     }
-    float sum = _mm_cvtss_f32(carry);
-    for (; i < n; ++i) {
-        sum += acc[i];
-        acc[i] = 0.0f;
-        out[i] = coverage_u8(sum, R);
-    }
-    acc[n] = acc[n + 1] = 0.0f;
-}
 
-template <FillRule R>
-void sse2_f32(float* acc, int n, float* out) {
-    __m128 carry = _mm_setzero_ps();
-    int i = 0;
-    for (; i + 16 <= n; i += 16) {
-        __m128 a, b, c, d;
-        prefix16(acc + i, carry, a, b, c, d);
-        _mm_storeu_ps(out + i, coverage4<R>(a));
-        _mm_storeu_ps(out + i + 4, coverage4<R>(b));
-        _mm_storeu_ps(out + i + 8, coverage4<R>(c));
-        _mm_storeu_ps(out + i + 12, coverage4<R>(d));
+    template <FillRule R>
+    static void sum(float* acc, Carry& carry, std::uint8_t* out, int count) {
+        __m128 v[4];
+        prefix16(acc, carry, v);
+        // round(255·f): cvtps rounds to nearest (the default MXCSR mode).
+        const __m128 k255 = _mm_set1_ps(255.0f);
+        __m128i q[4];
+        for (int k = 0; k < 4; ++k) q[k] = _mm_cvtps_epi32(_mm_mul_ps(coverage4<R>(v[k]), k255));
+        const __m128i bytes = _mm_packus_epi16(_mm_packs_epi32(q[0], q[1]), _mm_packs_epi32(q[2], q[3]));
+        if (count == kBlock) {
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(out), bytes);
+        } else {
+            alignas(16) std::uint8_t tmp[kBlock];
+            _mm_store_si128(reinterpret_cast<__m128i*>(tmp), bytes);
+            std::memcpy(out, tmp, static_cast<std::size_t>(count));
+        }
     }
-    float sum = _mm_cvtss_f32(carry);
-    for (; i < n; ++i) {
-        sum += acc[i];
-        acc[i] = 0.0f;
-        out[i] = coverage_of(sum, R);
+
+    template <FillRule R>
+    static void sum(float* acc, Carry& carry, float* out, int count) {
+        __m128 v[4];
+        prefix16(acc, carry, v);
+        alignas(16) float tmp[kBlock];
+        float* dst = count == kBlock ? out : tmp;
+        for (int k = 0; k < 4; ++k) _mm_storeu_ps(dst + 4 * k, coverage4<R>(v[k]));
+        if (dst == tmp) std::memcpy(out, tmp, sizeof(float) * static_cast<std::size_t>(count));
     }
-    acc[n] = acc[n + 1] = 0.0f;
+};
+
+template <FillRule R, typename Out>
+void sse2_sweep(float* acc, std::uint8_t* flags, int n, Out* out) {
+    sweep_blocks<Sse2Block, R>(acc, flags, n, out);
 }
 
 }  // namespace
 
 const SweepKernels& scalar_kernels() {
-    static const SweepKernels k{{scalar_u8<FillRule::NonZero>, scalar_u8<FillRule::EvenOdd>},
-                                {scalar_f32<FillRule::NonZero>, scalar_f32<FillRule::EvenOdd>},
-                                "scalar"};
+    static const SweepKernels k{
+        {scalar_sweep<FillRule::NonZero, std::uint8_t>, scalar_sweep<FillRule::EvenOdd, std::uint8_t>},
+        {scalar_sweep<FillRule::NonZero, float>, scalar_sweep<FillRule::EvenOdd, float>},
+        "scalar"};
     return k;
 }
 
 const SweepKernels& sse2_kernels() {
-    static const SweepKernels k{{sse2_u8<FillRule::NonZero>, sse2_u8<FillRule::EvenOdd>},
-                                {sse2_f32<FillRule::NonZero>, sse2_f32<FillRule::EvenOdd>},
-                                "sse2"};
+    static const SweepKernels k{
+        {sse2_sweep<FillRule::NonZero, std::uint8_t>, sse2_sweep<FillRule::EvenOdd, std::uint8_t>},
+        {sse2_sweep<FillRule::NonZero, float>, sse2_sweep<FillRule::EvenOdd, float>},
+        "sse2"};
     return k;
 }
 

@@ -3,13 +3,20 @@
 // coverage(i) = f(acc[0] + … + acc[i]) where f is the fill rule:
 //   NonZero: f(a) = min(|a|, 1)
 //   EvenOdd: f(a) = 1 − |1 − (|a| mod 2)|, the triangle wave (0 at even windings, 1 at odd)
-// 8-bit output is round(255·f). Every kernel also ZEROES the acc entries it reads, plus the two
-// guard entries acc[n] and acc[n+1], so the band is clean for the next fill without a memset.
+// 8-bit output is round(255·f).
 //
-// Kernels: a scalar reference, SSE2 (the x86-64 baseline) and AVX2 (chosen at run time). SIMD
-// kernels compute the prefix sum in registers (log-step shifts) and chain the running total
-// across blocks of 4 vectors through a single add, so the loop is bound by throughput, not by
-// the latency of the carry.
+// Sparse in blocks of kBlock pixels. Edge drawing marks each block it writes deltas into
+// (`flags[b] = 1`). An unmarked block has all-zero deltas, so its coverage is the constant
+// f(running sum): it is FILLED (memset), not summed. That is the "run filling" of sparse
+// rasterizers (FreeType's spans) without a cell list: at 512 px a glyph row is mostly empty or
+// solid, and only the few blocks an edge crosses pay for a prefix sum. Marked blocks are summed
+// in registers (log-step shifts inside a vector, the running total chained through one add per
+// block, so the loop is bound by throughput rather than by the carry's latency).
+//
+// Contract of every kernel, for a row of n output pixels:
+//   acc   has row_cells(n) floats, zero except in marked blocks; flags has row_blocks(n) bytes.
+//   On return acc and flags are all zero again, so the band needs no memset before the next
+//   fill, and out[0, n) holds the coverage.
 #pragma once
 
 #include <cstdint>
@@ -18,8 +25,16 @@
 
 namespace bezel::raster_detail {
 
-using SweepU8Fn = void (*)(float* acc, int n, std::uint8_t* out);
-using SweepF32Fn = void (*)(float* acc, int n, float* out);
+inline constexpr int kBlockShift = 4;
+inline constexpr int kBlock = 1 << kBlockShift;  // pixels per block (two AVX2 vectors)
+
+// Cells a row of n pixels needs: n, two guard cells (a piece at x = n writes acc[n], acc[n+1]),
+// rounded up to whole blocks so kernels never read past the row.
+inline int row_cells(int n) { return (n + 2 + kBlock - 1) & ~(kBlock - 1); }
+inline int row_blocks(int n) { return row_cells(n) >> kBlockShift; }
+
+using SweepU8Fn = void (*)(float* acc, std::uint8_t* flags, int n, std::uint8_t* out);
+using SweepF32Fn = void (*)(float* acc, std::uint8_t* flags, int n, float* out);
 
 struct SweepKernels {
     SweepU8Fn u8[2];    // indexed by FillRule
@@ -27,6 +42,7 @@ struct SweepKernels {
     const char* name;   // "scalar", "sse2", "avx2"
 };
 
+// The scalar kernels ignore the flags (they sum every cell) and serve as the reference.
 const SweepKernels& scalar_kernels();
 const SweepKernels& sse2_kernels();
 // Null when the CPU (or the build) has no AVX2.
@@ -34,7 +50,7 @@ const SweepKernels* avx2_kernels();
 // The fastest kernels this CPU supports, decided once.
 const SweepKernels& best_kernels();
 
-// Scalar f(a) for both rules, shared by every kernel's tail.
+// Scalar f(a) for both rules.
 inline float coverage_of(float a, FillRule rule) {
     float v = a < 0 ? -a : a;
     if (rule == FillRule::EvenOdd) {
@@ -43,6 +59,7 @@ inline float coverage_of(float a, FillRule rule) {
     }
     return v < 1.0f ? v : 1.0f;
 }
+// round(255·f); the SIMD kernels round half to even, which differs only on exact .5 values.
 inline std::uint8_t coverage_u8(float a, FillRule rule) {
     return static_cast<std::uint8_t>(coverage_of(a, rule) * 255.0f + 0.5f);
 }

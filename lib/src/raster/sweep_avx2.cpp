@@ -1,20 +1,27 @@
-// AVX2 sweep kernels: 8 lanes, 32 pixels per iteration. Compiled with the avx2 target attribute
-// and only called after __builtin_cpu_supports("avx2") said yes, so the library still runs on
-// any x86-64.
-#include <immintrin.h>
+// AVX2 sweep kernels: a block of 16 cells is two 8-lane vectors. Everything after the pragma is
+// compiled for AVX2 and only called after __builtin_cpu_supports("avx2") said yes, so the
+// library still runs on any x86-64. Standard headers come first so that they stay baseline code.
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
 
 #include "raster/sweep.hpp"
 
-namespace bezel::raster_detail {
-
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define BEZEL_AVX2 __attribute__((target("avx2")))
+#include <immintrin.h>
+
+#pragma GCC push_options
+#pragma GCC target("avx2")
+#include "raster/sweep_blocks.hpp"
+
+
+namespace bezel::raster_detail {
 
 namespace {
 
-// Inclusive prefix sum of 8 floats: log steps inside each 128-bit lane, then the low lane's total
-// added to the high lane.
-BEZEL_AVX2 inline __m256 prefix8(__m256 x) {
+// Inclusive prefix sum of 8 floats: log steps inside each 128-bit lane, then the low lane's
+// total added to the high lane.
+inline __m256 prefix8(__m256 x) {
     x = _mm256_add_ps(x, _mm256_castsi256_ps(_mm256_slli_si256(_mm256_castps_si256(x), 4)));
     x = _mm256_add_ps(x, _mm256_castsi256_ps(_mm256_slli_si256(_mm256_castps_si256(x), 8)));
     // permute2f128 0x08: low lane zeroed, high lane = low lane of x; then broadcast element 3.
@@ -23,13 +30,13 @@ BEZEL_AVX2 inline __m256 prefix8(__m256 x) {
     return _mm256_add_ps(x, low_total);
 }
 // All lanes = element 7.
-BEZEL_AVX2 inline __m256 last8(__m256 x) {
+inline __m256 last8(__m256 x) {
     __m256 t = _mm256_shuffle_ps(x, x, 0xFF);
     return _mm256_permute2f128_ps(t, t, 0x11);
 }
 
 template <FillRule R>
-BEZEL_AVX2 inline __m256 coverage8(__m256 a) {
+inline __m256 coverage8(__m256 a) {
     __m256 v = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), a);
     if (R == FillRule::EvenOdd) {
         __m256 q = _mm256_round_ps(_mm256_mul_ps(v, _mm256_set1_ps(0.5f)),
@@ -40,79 +47,84 @@ BEZEL_AVX2 inline __m256 coverage8(__m256 a) {
     return _mm256_min_ps(v, _mm256_set1_ps(1.0f));
 }
 
-// As prefix16 in sweep.cpp: four vectors, one add on the carried chain.
-BEZEL_AVX2 inline void prefix32(float* acc, __m256& carry, __m256 (&v)[4]) {
-    for (int k = 0; k < 4; ++k) {
-        v[k] = prefix8(_mm256_loadu_ps(acc + 8 * k));
-        _mm256_storeu_ps(acc + 8 * k, _mm256_setzero_ps());
-    }
-    const __m256 t0 = last8(v[0]);
-    const __m256 t01 = _mm256_add_ps(t0, last8(v[1]));
-    const __m256 t012 = _mm256_add_ps(t01, last8(v[2]));
-    v[1] = _mm256_add_ps(v[1], t0);
-    v[2] = _mm256_add_ps(v[2], t01);
-    v[3] = _mm256_add_ps(v[3], t012);
-    const __m256 before = carry;
-    carry = _mm256_add_ps(carry, last8(v[3]));
-    for (int k = 0; k < 4; ++k) v[k] = _mm256_add_ps(v[k], before);
-}
+struct Avx2Block {
+    using Carry = __m256;
+    static Carry zero() { return _mm256_setzero_ps(); }
+    static float first(Carry c) { return _mm256_cvtss_f32(c); }
 
-template <FillRule R>
-BEZEL_AVX2 void avx2_u8(float* acc, int n, std::uint8_t* out) {
-    __m256 carry = _mm256_setzero_ps();
-    const __m256 k255 = _mm256_set1_ps(255.0f);
-    // packs/packus work per 128-bit lane; this puts the 32-bit groups back in pixel order.
-    const __m256i order = _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7);
-    int i = 0;
-    for (; i + 32 <= n; i += 32) {
-        __m256 v[4];
-        prefix32(acc + i, carry, v);
-        __m256i q[4];
-        for (int k = 0; k < 4; ++k) q[k] = _mm256_cvtps_epi32(_mm256_mul_ps(coverage8<R>(v[k]), k255));
-        __m256i bytes = _mm256_packus_epi16(_mm256_packs_epi32(q[0], q[1]),
-                                            _mm256_packs_epi32(q[2], q[3]));
-        bytes = _mm256_permutevar8x32_epi32(bytes, order);
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i), bytes);
+    static void prefix16(float* acc, Carry& carry, __m256& v0, __m256& v1) {
+        v0 = prefix8(_mm256_loadu_ps(acc));
+        v1 = prefix8(_mm256_loadu_ps(acc + 8));
+        _mm256_storeu_ps(acc, _mm256_setzero_ps());
+        _mm256_storeu_ps(acc + 8, _mm256_setzero_ps());
+        v1 = _mm256_add_ps(v1, last8(v0));
+        const __m256 before = carry;
+        carry = _mm256_add_ps(carry, last8(v1));  // the only add on the loop-carried chain
+        v0 = _mm256_add_ps(v0, before);
+        v1 = _mm256_add_ps(v1, before);
     }
-    float sum = _mm256_cvtss_f32(carry);
-    for (; i < n; ++i) {
-        sum += acc[i];
-        acc[i] = 0.0f;
-        out[i] = coverage_u8(sum, R);
-    }
-    acc[n] = acc[n + 1] = 0.0f;
-}
 
-template <FillRule R>
-BEZEL_AVX2 void avx2_f32(float* acc, int n, float* out) {
-    __m256 carry = _mm256_setzero_ps();
-    int i = 0;
-    for (; i + 32 <= n; i += 32) {
-        __m256 v[4];
-        prefix32(acc + i, carry, v);
-        for (int k = 0; k < 4; ++k) _mm256_storeu_ps(out + i + 8 * k, coverage8<R>(v[k]));
+    template <FillRule R>
+    static void sum(float* acc, Carry& carry, std::uint8_t* out, int count) {
+        __m256 v0, v1;
+        prefix16(acc, carry, v0, v1);
+        const __m256 k255 = _mm256_set1_ps(255.0f);
+        const __m256i q0 = _mm256_cvtps_epi32(_mm256_mul_ps(coverage8<R>(v0), k255));
+        const __m256i q1 = _mm256_cvtps_epi32(_mm256_mul_ps(coverage8<R>(v1), k255));
+        // 16 int32 → 16 bytes with 128-bit packs (the 256-bit ones interleave lanes).
+        const __m128i w0 = _mm_packs_epi32(_mm256_castsi256_si128(q0), _mm256_extracti128_si256(q0, 1));
+        const __m128i w1 = _mm_packs_epi32(_mm256_castsi256_si128(q1), _mm256_extracti128_si256(q1, 1));
+        const __m128i bytes = _mm_packus_epi16(w0, w1);
+        if (count == kBlock) {
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(out), bytes);
+        } else {
+            alignas(16) std::uint8_t tmp[kBlock];
+            _mm_store_si128(reinterpret_cast<__m128i*>(tmp), bytes);
+            std::memcpy(out, tmp, static_cast<std::size_t>(count));
+        }
     }
-    float sum = _mm256_cvtss_f32(carry);
-    for (; i < n; ++i) {
-        sum += acc[i];
-        acc[i] = 0.0f;
-        out[i] = coverage_of(sum, R);
+
+    template <FillRule R>
+    static void sum(float* acc, Carry& carry, float* out, int count) {
+        __m256 v0, v1;
+        prefix16(acc, carry, v0, v1);
+        if (count == kBlock) {
+            _mm256_storeu_ps(out, coverage8<R>(v0));
+            _mm256_storeu_ps(out + 8, coverage8<R>(v1));
+        } else {
+            alignas(32) float tmp[kBlock];
+            _mm256_store_ps(tmp, coverage8<R>(v0));
+            _mm256_store_ps(tmp + 8, coverage8<R>(v1));
+            std::memcpy(out, tmp, sizeof(float) * static_cast<std::size_t>(count));
+        }
     }
-    acc[n] = acc[n + 1] = 0.0f;
+};
+
+template <FillRule R, typename Out>
+void avx2_sweep(float* acc, std::uint8_t* flags, int n, Out* out) {
+    sweep_blocks<Avx2Block, R>(acc, flags, n, out);
 }
 
 }  // namespace
+}  // namespace bezel::raster_detail
+#pragma GCC pop_options
 
+namespace bezel::raster_detail {
+
+// Baseline code (outside the pragma): it runs on every CPU, to ask whether AVX2 is there.
 const SweepKernels* avx2_kernels() {
-    static const SweepKernels k{{avx2_u8<FillRule::NonZero>, avx2_u8<FillRule::EvenOdd>},
-                                {avx2_f32<FillRule::NonZero>, avx2_f32<FillRule::EvenOdd>},
-                                "avx2"};
+    static const SweepKernels k{
+        {avx2_sweep<FillRule::NonZero, std::uint8_t>, avx2_sweep<FillRule::EvenOdd, std::uint8_t>},
+        {avx2_sweep<FillRule::NonZero, float>, avx2_sweep<FillRule::EvenOdd, float>},
+        "avx2"};
     static const bool supported = __builtin_cpu_supports("avx2");
     return supported ? &k : nullptr;
 }
 
-#else
-const SweepKernels* avx2_kernels() { return nullptr; }
-#endif
-
 }  // namespace bezel::raster_detail
+
+#else
+namespace bezel::raster_detail {
+const SweepKernels* avx2_kernels() { return nullptr; }
+}  // namespace bezel::raster_detail
+#endif

@@ -1,0 +1,451 @@
+// bench_raster — bezel's rasterizer against FreeType's smooth rasterizer, stb_truetype and AGG,
+// on the same unhinted glyph outlines and the same preallocated A8 targets, in one run.
+//
+//   bench_raster [--font F]... [--sizes 12,16,...] [--glyphs ascii|all] [--reps N] [--json]
+//                [--accuracy]
+//
+// What is timed, per glyph, with the outline already loaded and converted outside the loop:
+//   freetype  memset of the target + FT_Outline_Render(FT_RASTER_FLAG_AA) into it (the smooth
+//             rasterizer flattens conics/cubics itself).
+//   bezel     Rasterizer::fill_path: flatten (kDefaultRasterTolerancePx = 1/64 px, WangUniform,
+//             or --tolerance) + rasterize;
+//             the fill writes every pixel, so clearing is included.
+//   stb       stbtt_Rasterize (flatness 0.35 px, as stbtt_GetGlyphBitmap uses), which writes every
+//             pixel of the target itself. Its own parse of the glyph (stbtt_GetGlyphShape) is
+//             done outside the loop.
+//   agg       renderer clear + rasterizer_scanline_aa over conv_curve(path_storage) +
+//             render_scanlines_aa_solid (scanline_u8, gray8).
+// Reported: ns per glyph = min over `reps` runs of (total time over all glyphs) / glyphs, and the
+// ratio FreeType time / bezel time (> 1 means bezel is faster).
+//
+// --accuracy also measures, per size, the error of bezel and FreeType against the reference:
+// the same outline scaled by 16, rendered with bezel's float coverage and box-filtered 16×16
+// back (mean and max |error| in 1/255 units).
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include FT_OUTLINE_H
+
+#include <algorithm>
+#include <ctime>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "bezel/raster.hpp"
+
+#ifdef BEZEL_HAVE_STB
+#define STB_TRUETYPE_IMPLEMENTATION
+#define STBTT_STATIC
+#include <stb_truetype.h>
+#endif
+
+#ifdef BEZEL_HAVE_AGG
+#include <agg_conv_curve.h>
+#include <agg_path_storage.h>
+#include <agg_pixfmt_gray.h>
+#include <agg_rasterizer_scanline_aa.h>
+#include <agg_renderer_base.h>
+#include <agg_renderer_scanline.h>
+#include <agg_scanline_u.h>
+#endif
+
+namespace {
+
+// CPU time of this thread, not wall time: the benchmark machine is shared (others compile on
+// it), and preemption would otherwise be billed to whichever renderer happened to be running.
+double thread_ns() {
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) * 1e9 + double(ts.tv_nsec);
+}
+
+struct Glyph {
+    unsigned gid = 0;
+    FT_Outline outline{};           // owned copy, translated so its box starts at (0, 0)
+    bezel::Path path;               // same outline in pixels, y down, box at (0, 0)
+    int width = 0, height = 0;      // the A8 target
+    int box_x0 = 0, box_y1 = 0;     // box in y-up pixels (for stb, which parses the font itself)
+#ifdef BEZEL_HAVE_AGG
+    agg::path_storage agg_path;
+#endif
+};
+
+struct Options {
+    std::vector<std::string> fonts;
+    std::vector<int> sizes{12, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512};
+    bool all_glyphs = false;
+    int reps = 5;
+    bool json = false;
+    bool accuracy = false;
+    bool breakdown = false;  // also time bezel's flatten and fill apart
+    double tolerance_px = bezel::kDefaultRasterTolerancePx;
+};
+
+// FT_Outline (y up, 26.6) → bezel Path (y down, pixels), via FreeType's own decomposition so
+// conic runs and implied on-curve points are handled exactly as the smooth rasterizer sees them.
+struct Decompose {
+    bezel::Path* path;
+    double height;
+    bezel::Point p(const FT_Vector* v) const { return {v->x / 64.0, height - v->y / 64.0}; }
+};
+int dmove(const FT_Vector* to, void* u) {
+    auto* d = static_cast<Decompose*>(u);
+    if (!d->path->empty()) d->path->close();
+    d->path->move_to(d->p(to));
+    return 0;
+}
+int dline(const FT_Vector* to, void* u) {
+    auto* d = static_cast<Decompose*>(u);
+    d->path->line_to(d->p(to));
+    return 0;
+}
+int dconic(const FT_Vector* c, const FT_Vector* to, void* u) {
+    auto* d = static_cast<Decompose*>(u);
+    d->path->quad_to(d->p(c), d->p(to));
+    return 0;
+}
+int dcubic(const FT_Vector* c1, const FT_Vector* c2, const FT_Vector* to, void* u) {
+    auto* d = static_cast<Decompose*>(u);
+    d->path->cubic_to(d->p(c1), d->p(c2), d->p(to));
+    return 0;
+}
+
+bezel::Path to_path(const FT_Outline& o, int height) {
+    bezel::Path path;
+    Decompose d{&path, static_cast<double>(height)};
+    FT_Outline_Funcs funcs{dmove, dline, dconic, dcubic, 0, 0};
+    FT_Outline_Decompose(const_cast<FT_Outline*>(&o), &funcs, &d);
+    if (!path.empty()) path.close();
+    return path;
+}
+
+#ifdef BEZEL_HAVE_AGG
+void to_agg(const bezel::Path& path, agg::path_storage& out) {
+    const auto& pts = path.points();
+    std::size_t i = 0;
+    for (bezel::Verb v : path.verbs()) {
+        switch (v) {
+            case bezel::Verb::Move: out.move_to(pts[i].x, pts[i].y); i += 1; break;
+            case bezel::Verb::Line: out.line_to(pts[i].x, pts[i].y); i += 1; break;
+            case bezel::Verb::Quad:
+                out.curve3(pts[i].x, pts[i].y, pts[i + 1].x, pts[i + 1].y);
+                i += 2;
+                break;
+            case bezel::Verb::Cubic:
+                out.curve4(pts[i].x, pts[i].y, pts[i + 1].x, pts[i + 1].y, pts[i + 2].x, pts[i + 2].y);
+                i += 3;
+                break;
+            case bezel::Verb::Close: out.close_polygon(); break;
+        }
+    }
+}
+#endif
+
+struct Face {
+    std::string file;
+    FT_Face face = nullptr;
+    std::vector<unsigned char> bytes;  // for stb
+#ifdef BEZEL_HAVE_STB
+    stbtt_fontinfo stb{};
+    bool stb_ok = false;
+#endif
+};
+
+std::vector<unsigned> glyph_set(FT_Face face, bool all) {
+    std::vector<unsigned> gids;
+    if (all) {
+        for (FT_Long g = 0; g < face->num_glyphs; ++g) gids.push_back(static_cast<unsigned>(g));
+    } else {
+        for (FT_ULong c = 33; c < 127; ++c) {
+            FT_UInt g = FT_Get_Char_Index(face, c);
+            if (g) gids.push_back(g);
+        }
+    }
+    return gids;
+}
+
+std::vector<Glyph> load_glyphs(FT_Library lib, Face& f, int size, bool all) {
+    std::vector<Glyph> out;
+    FT_Set_Pixel_Sizes(f.face, 0, static_cast<FT_UInt>(size));
+    for (unsigned gid : glyph_set(f.face, all)) {
+        if (FT_Load_Glyph(f.face, gid, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP)) continue;
+        FT_GlyphSlot slot = f.face->glyph;
+        if (slot->format != FT_GLYPH_FORMAT_OUTLINE || slot->outline.n_points == 0) continue;
+        FT_BBox cb;
+        FT_Outline_Get_CBox(&slot->outline, &cb);
+        Glyph g;
+        g.gid = gid;
+        int x0 = static_cast<int>(std::floor(cb.xMin / 64.0)), x1 = static_cast<int>(std::ceil(cb.xMax / 64.0));
+        int y0 = static_cast<int>(std::floor(cb.yMin / 64.0)), y1 = static_cast<int>(std::ceil(cb.yMax / 64.0));
+        g.width = std::max(1, x1 - x0);
+        g.height = std::max(1, y1 - y0);
+        g.box_x0 = x0;
+        g.box_y1 = y1;
+        FT_Outline_New(lib, static_cast<FT_UInt>(slot->outline.n_points),
+                       slot->outline.n_contours, &g.outline);
+        FT_Outline_Copy(&slot->outline, &g.outline);
+        FT_Outline_Translate(&g.outline, -x0 * 64, -y0 * 64);
+        g.path = to_path(g.outline, g.height);
+#ifdef BEZEL_HAVE_AGG
+        to_agg(g.path, g.agg_path);
+#endif
+        out.push_back(std::move(g));
+    }
+    return out;
+}
+
+struct Target {
+    std::vector<unsigned char> pixels;
+    void fit(const std::vector<Glyph>& glyphs) {
+        std::size_t most = 0;
+        for (const Glyph& g : glyphs) most = std::max(most, std::size_t(g.width) * g.height);
+        pixels.assign(most, 0);
+    }
+};
+
+template <typename F>
+double time_ns_per_glyph(const std::vector<Glyph>& glyphs, int reps, F&& render) {
+    // Repeat the glyph set until one run lasts ≥ 20 ms, so the clock's resolution is irrelevant.
+    int inner = 1;
+    for (;;) {
+        double t0 = thread_ns();
+        for (int i = 0; i < inner; ++i)
+            for (const Glyph& g : glyphs) render(g);
+        double ms = (thread_ns() - t0) * 1e-6;
+        if (ms >= 20.0 || inner >= (1 << 20)) break;
+        inner *= 2;
+    }
+    double best = 1e300;
+    for (int r = 0; r < reps; ++r) {
+        double t0 = thread_ns();
+        for (int i = 0; i < inner; ++i)
+            for (const Glyph& g : glyphs) render(g);
+        double ns = thread_ns() - t0;
+        best = std::min(best, ns / (double(inner) * double(glyphs.size())));
+    }
+    return best;
+}
+
+void render_freetype(FT_Library lib, const Glyph& g, unsigned char* px) {
+    std::memset(px, 0, std::size_t(g.width) * g.height);
+    FT_Bitmap bm{};
+    bm.rows = static_cast<unsigned>(g.height);
+    bm.width = static_cast<unsigned>(g.width);
+    bm.pitch = g.width;
+    bm.buffer = px;
+    bm.num_grays = 256;
+    bm.pixel_mode = FT_PIXEL_MODE_GRAY;
+    FT_Raster_Params params{};
+    params.target = &bm;
+    params.flags = FT_RASTER_FLAG_AA;
+    FT_Outline_Render(lib, const_cast<FT_Outline*>(&g.outline), &params);
+}
+
+// Reference coverage: outline ×16 rendered with float coverage, each 16×16 block averaged.
+std::vector<double> reference_16x(bezel::Rasterizer& r, const Glyph& g) {
+    const int W = g.width * 16, H = g.height * 16;
+    std::vector<float> big(std::size_t(W) * H);
+    (void)r.fill_path(g.path, bezel::Affine::scale(16.0), bezel::FillRule::NonZero,
+                      bezel::FloatMaskView{big.data(), W, H, W});
+    std::vector<double> out(std::size_t(g.width) * g.height, 0.0);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) out[std::size_t(y / 16) * g.width + x / 16] += big[std::size_t(y) * W + x];
+    for (double& v : out) v /= 256.0;
+    return out;
+}
+
+struct ErrorStats {
+    double sum = 0, max = 0;
+    std::size_t n = 0;
+    void add(double e) { sum += e; max = std::max(max, e); ++n; }
+    double mean() const { return n ? sum / double(n) : 0.0; }
+};
+
+std::vector<int> parse_sizes(const std::string& s) {
+    std::vector<int> out;
+    std::size_t i = 0;
+    while (i < s.size()) {
+        std::size_t j = s.find(',', i);
+        if (j == std::string::npos) j = s.size();
+        int v = std::atoi(s.substr(i, j - i).c_str());
+        if (v > 0 && v <= 4096) out.push_back(v);
+        i = j + 1;
+    }
+    return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Options opt;
+    for (int i = 1; i < argc; ++i) {
+        std::string a = argv[i];
+        auto next = [&]() -> std::string {
+            if (i + 1 >= argc) { std::fprintf(stderr, "bench_raster: %s needs a value\n", a.c_str()); std::exit(2); }
+            return argv[++i];
+        };
+        if (a == "--font") opt.fonts.push_back(next());
+        else if (a == "--sizes") opt.sizes = parse_sizes(next());
+        else if (a == "--glyphs") opt.all_glyphs = next() == "all";
+        else if (a == "--reps") opt.reps = std::max(1, std::atoi(next().c_str()));
+        else if (a == "--json") opt.json = true;
+        else if (a == "--accuracy") opt.accuracy = true;
+        else if (a == "--breakdown") opt.breakdown = true;
+        else if (a == "--tolerance") opt.tolerance_px = std::atof(next().c_str());
+        else { std::fprintf(stderr, "bench_raster: unknown option %s\n", a.c_str()); return 2; }
+    }
+    if (opt.fonts.empty()) {
+        opt.fonts = {std::string(BEZEL_FONTS_DIR) + "/dejavu-sans/DejaVuSans.ttf",
+                     std::string(BEZEL_FONTS_DIR) + "/cantarell/Cantarell-Regular.otf"};
+    }
+    if (opt.sizes.empty()) { std::fprintf(stderr, "bench_raster: no valid --sizes\n"); return 2; }
+
+    FT_Library lib;
+    if (FT_Init_FreeType(&lib)) { std::fprintf(stderr, "bench_raster: FreeType init failed\n"); return 1; }
+    std::vector<Face> faces;
+    for (const std::string& file : opt.fonts) {
+        Face f;
+        f.file = file;
+        if (FT_New_Face(lib, file.c_str(), 0, &f.face)) {
+            std::fprintf(stderr, "bench_raster: %s: cannot open font\n", file.c_str());
+            return 1;
+        }
+        std::ifstream in(file, std::ios::binary);
+        f.bytes.assign(std::istreambuf_iterator<char>(in), {});
+        faces.push_back(std::move(f));
+    }
+#ifdef BEZEL_HAVE_STB
+    for (Face& f : faces)
+        f.stb_ok = stbtt_InitFont(&f.stb, f.bytes.data(), stbtt_GetFontOffsetForIndex(f.bytes.data(), 0)) != 0;
+#endif
+
+    bezel::Rasterizer rast;
+    bezel::FlattenOptions flat_opts;
+    flat_opts.tolerance_px = opt.tolerance_px;
+    std::string json = "{\"kernels\":\"" + std::string(bezel::raster_kernel_name()) + "\",\"results\":[";
+    bool first_json = true;
+    if (!opt.json) {
+        std::printf("%-22s %5s %6s %10s %10s %8s %10s %10s%s\n", "font", "size", "glyphs", "freetype",
+                    "bezel", "ft/bezel", "stb", "agg", opt.accuracy ? "   err bezel mean/max  err ft mean/max (1/255)" : "");
+    }
+    for (Face& f : faces) {
+        std::string name = f.file.substr(f.file.find_last_of('/') + 1);
+        for (int size : opt.sizes) {
+            std::vector<Glyph> glyphs = load_glyphs(lib, f, size, opt.all_glyphs);
+            if (glyphs.empty()) continue;
+            Target t;
+            t.fit(glyphs);
+            unsigned char* px = t.pixels.data();
+
+            double ft = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) { render_freetype(lib, g, px); });
+            double bz = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) {
+                (void)rast.fill_path(g.path, bezel::Affine::identity(), bezel::FillRule::NonZero,
+                                     bezel::MaskView{px, g.width, g.height, g.width}, flat_opts);
+            });
+            if (opt.breakdown) {
+                std::vector<bezel::Polylines> flat(glyphs.size());
+                for (std::size_t k = 0; k < glyphs.size(); ++k)
+                    bezel::flatten(glyphs[k].path, bezel::Affine::identity(), flat_opts, flat[k]);
+                bezel::Polylines scratch;
+                double fl = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) {
+                    scratch.clear();
+                    bezel::flatten(g.path, bezel::Affine::identity(), flat_opts, scratch);
+                });
+                std::size_t k = 0, segs = 0;
+                for (const auto& p : flat) segs += p.points.size();
+                double fi = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) {
+                    (void)rast.fill(flat[k++ % flat.size()], bezel::FillRule::NonZero,
+                                    bezel::MaskView{px, g.width, g.height, g.width});
+                });
+                std::fprintf(stderr, "  breakdown %s %d px: flatten %.0f ns, fill %.0f ns, %.0f segments/glyph\n",
+                             name.c_str(), size, fl, fi, double(segs) / double(flat.size()));
+            }
+            double stb = -1, agg_ns = -1;
+#ifdef BEZEL_HAVE_STB
+            if (f.stb_ok) {
+                const float scale = stbtt_ScaleForMappingEmToPixels(&f.stb, float(size));
+                // stb parses its own glyph data; done once per glyph outside the timed loop.
+                std::vector<std::pair<stbtt_vertex*, int>> shapes;
+                for (const Glyph& g : glyphs) {
+                    stbtt_vertex* v = nullptr;
+                    int n = stbtt_GetGlyphShape(&f.stb, int(g.gid), &v);
+                    shapes.push_back({v, n});
+                }
+                std::size_t k = 0;
+                stb = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) {
+                    const auto& s = shapes[k++ % shapes.size()];
+                    stbtt__bitmap bm{g.width, g.height, g.width, px};
+                    stbtt_Rasterize(&bm, 0.35f, s.first, s.second, scale, scale, 0.0f, 0.0f,
+                                    g.box_x0, -g.box_y1, 1, nullptr);
+                });
+                for (auto& s : shapes) stbtt_FreeShape(&f.stb, s.first);
+            }
+#endif
+#ifdef BEZEL_HAVE_AGG
+            {
+                agg::rasterizer_scanline_aa<> ras;
+                agg::scanline_u8 sl;
+                agg_ns = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) {
+                    agg::rendering_buffer rb(px, unsigned(g.width), unsigned(g.height), g.width);
+                    agg::pixfmt_gray8 pf(rb);
+                    agg::renderer_base<agg::pixfmt_gray8> rbase(pf);
+                    rbase.clear(agg::gray8(0));
+                    ras.reset();
+                    agg::conv_curve<agg::path_storage> curves(const_cast<agg::path_storage&>(g.agg_path));
+                    ras.add_path(curves);
+                    agg::render_scanlines_aa_solid(ras, sl, rbase, agg::gray8(255));
+                });
+            }
+#endif
+            ErrorStats eb, ef;
+            if (opt.accuracy) {
+                std::vector<unsigned char> mine, theirs;
+                for (const Glyph& g : glyphs) {
+                    std::vector<double> ref = reference_16x(rast, g);
+                    mine.assign(ref.size(), 0);
+                    theirs.assign(ref.size(), 0);
+                    (void)rast.fill_path(g.path, bezel::Affine::identity(), bezel::FillRule::NonZero,
+                                         bezel::MaskView{mine.data(), g.width, g.height, g.width}, flat_opts);
+                    render_freetype(lib, g, theirs.data());
+                    for (std::size_t i = 0; i < ref.size(); ++i) {
+                        eb.add(std::fabs(mine[i] - ref[i] * 255.0));
+                        ef.add(std::fabs(theirs[i] - ref[i] * 255.0));
+                    }
+                }
+            }
+            if (opt.json) {
+                char buf[512];
+                std::snprintf(buf, sizeof buf,
+                              "%s{\"font\":\"%s\",\"size\":%d,\"glyphs\":%zu,\"freetype_ns\":%.1f,"
+                              "\"bezel_ns\":%.1f,\"ratio\":%.3f,\"stb_ns\":%.1f,\"agg_ns\":%.1f%s",
+                              first_json ? "" : ",", name.c_str(), size, glyphs.size(), ft, bz,
+                              ft / bz, stb, agg_ns, opt.accuracy ? "," : "}");
+                json += buf;
+                if (opt.accuracy) {
+                    std::snprintf(buf, sizeof buf,
+                                  "\"bezel_err_mean\":%.4f,\"bezel_err_max\":%.3f,"
+                                  "\"freetype_err_mean\":%.4f,\"freetype_err_max\":%.3f}",
+                                  eb.mean(), eb.max, ef.mean(), ef.max);
+                    json += buf;
+                }
+                first_json = false;
+            } else {
+                std::printf("%-22s %5d %6zu %10.0f %10.0f %8.2f %10.0f %10.0f", name.c_str(), size,
+                            glyphs.size(), ft, bz, ft / bz, stb, agg_ns);
+                if (opt.accuracy)
+                    std::printf("   %7.3f / %6.2f     %7.3f / %6.2f", eb.mean(), eb.max, ef.mean(), ef.max);
+                std::printf("\n");
+                std::fflush(stdout);
+            }
+            for (Glyph& g : glyphs) FT_Outline_Done(lib, &g.outline);
+        }
+    }
+    if (opt.json) std::printf("%s]}\n", json.c_str());
+    for (Face& f : faces) FT_Done_Face(f.face);
+    FT_Done_FreeType(lib);
+    return 0;
+}
