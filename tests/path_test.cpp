@@ -1,6 +1,7 @@
 // Path model: builder, segment iteration with stable indices, transform, boxes, reverse, area.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <ostream>
@@ -211,6 +212,68 @@ TEST(PathBoxes, ControlBoxIsTheBoxOfSegmentPoints) {
     p.cubic_to({-5, 20}, {30, -10}, {10, 5});
     EXPECT_EQ(p.control_box(), Rect(-5, -10, 30, 20));
     EXPECT_TRUE(Path{}.control_box().is_empty());
+}
+
+namespace {
+
+// The largest value of f over [0, 1], found without derivatives: samples, then a ternary search
+// around every sample that is a discrete local maximum (a polynomial of degree ≤ 3 has at most
+// one interior maximum, and near it, it is unimodal), keeping the best.
+template <typename F>
+double max_by_sampling(F f) {
+    const int n = 200;
+    double v[n + 1];
+    for (int i = 0; i <= n; ++i) v[i] = f(double(i) / n);
+    double best = std::max(v[0], v[n]);
+    for (int i = 0; i <= n; ++i) {
+        if ((i > 0 && v[i - 1] > v[i]) || (i < n && v[i + 1] > v[i])) continue;
+        double lo = std::max(0.0, (i - 1.0) / n), hi = std::min(1.0, (i + 1.0) / n);
+        for (int it = 0; it < 80; ++it) {  // (2/3)^80 · 0.01 ≈ 1e-16
+            double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+            if (f(m1) < f(m2)) lo = m1; else hi = m2;
+        }
+        best = std::max({best, v[i], f(0.5 * (lo + hi))});
+    }
+    return best;
+}
+
+}  // namespace
+
+TEST(PathBoxes, TightBoundsContainTheCurvesAndTouchThem) {
+    std::mt19937_64 rng(41);
+    for (int trial = 0; trial < 300; ++trial) {
+        Path p = random_path(rng);
+        Rect b = p.bounds();
+        Rect c = p.control_box();
+        ASSERT_TRUE(b.x0 >= c.x0 && b.y0 >= c.y0 && b.x1 <= c.x1 && b.y1 <= c.y1);
+        // The extremes of the sampled curves, per side.
+        double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
+        for (const PathSeg& s : p.segments()) {
+            x1 = std::max(x1, max_by_sampling([&](double t) { return s.eval(t).x; }));
+            y1 = std::max(y1, max_by_sampling([&](double t) { return s.eval(t).y; }));
+            x0 = std::min(x0, -max_by_sampling([&](double t) { return -s.eval(t).x; }));
+            y0 = std::min(y0, -max_by_sampling([&](double t) { return -s.eval(t).y; }));
+            for (int i = 0; i <= 200; ++i) {
+                Point q = s.eval(i / 200.0);
+                // Contains every point of the curve (1e-9 absorbs rounding at |x| ≤ 100) …
+                ASSERT_TRUE(b.inflated(1e-9).contains(q)) << trial;
+            }
+        }
+        // … and every side touches the curves.
+        ASSERT_NEAR(b.x0, x0, 1e-9) << trial;
+        ASSERT_NEAR(b.y0, y0, 1e-9) << trial;
+        ASSERT_NEAR(b.x1, x1, 1e-9) << trial;
+        ASSERT_NEAR(b.y1, y1, 1e-9) << trial;
+    }
+    EXPECT_TRUE(Path{}.bounds().is_empty());
+}
+
+TEST(PathBoxes, BoundsOfACubicBulgeAreExact) {
+    Path p;  // symmetric arch: y extreme at t = ½, y = ¾·(−40) = −30
+    p.move_to({0, 0});
+    p.cubic_to({0, -40}, {100, -40}, {100, 0});
+    EXPECT_EQ(p.bounds(), Rect(0, -30, 100, 0));
+    EXPECT_EQ(p.control_box(), Rect(0, -40, 100, 0));
 }
 
 TEST(PathReverse, ReversesEachContourKeepingOrderAndClosedness) {

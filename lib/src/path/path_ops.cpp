@@ -60,8 +60,25 @@ Path Path::reversed() const {
 Rect Path::control_box() const {
     Rect box = Rect::empty();
     for (const PathSeg& s : segments()) {
-        int n = s.kind == SegKind::Line ? 2 : s.kind == SegKind::Quad ? 3 : 4;
-        for (int i = 0; i < n; ++i) box = box.union_with(s.p[i]);
+        switch (s.kind) {
+            case SegKind::Line: box = box.union_with(s.as_line().control_box()); break;
+            case SegKind::Quad: box = box.union_with(s.as_quad().control_box()); break;
+            case SegKind::Cubic: box = box.union_with(s.as_cubic().control_box()); break;
+        }
+    }
+    return box;
+}
+
+// Each curve's own tight box (end points plus the parameters where a derivative component
+// vanishes, from bezier.hpp); the union of tight boxes is the tight box of the union.
+Rect Path::bounds() const {
+    Rect box = Rect::empty();
+    for (const PathSeg& s : segments()) {
+        switch (s.kind) {
+            case SegKind::Line: box = box.union_with(s.as_line().bounding_box()); break;
+            case SegKind::Quad: box = box.union_with(s.as_quad().bounding_box()); break;
+            case SegKind::Cubic: box = box.union_with(s.as_cubic().bounding_box()); break;
+        }
     }
     return box;
 }
