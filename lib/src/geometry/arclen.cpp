@@ -6,8 +6,10 @@
 // are compared; their difference estimates the 8-point rule's error (the 16-point result is
 // far better, exact for polynomials of degree 31), so a piece is accepted when the difference is
 // within its share of the requested accuracy and halved otherwise, each half getting half the
-// share. |C′| is smooth except where C′ = 0 (a cusp), where it has a kink; halving isolates the
-// kink and the error there shrinks 4× per level while the share halves, so the recursion ends.
+// share. That estimate is only trusted where |C′| is smooth (see speed_is_smooth); near a cusp,
+// where |C′| has a kink and both rules can agree on a wrong value, pieces are halved until the
+// rigorous chord ≤ L ≤ control polygon bracket is tight enough. The bracket's width shrinks 4×
+// per halving at a cusp while the share halves, so the recursion ends.
 #include <algorithm>
 #include <cmath>
 
@@ -71,24 +73,53 @@ double gauss_speed_integral(const Curve& c, double t0, double t1) {
     return sum * half;
 }
 
+double polygon_length(const QuadBez& c) { return distance(c.p0, c.p1) + distance(c.p1, c.p2); }
+double polygon_length(const CubicBez& c) {
+    return distance(c.p0, c.p1) + distance(c.p1, c.p2) + distance(c.p2, c.p3);
+}
+double chord_length(const QuadBez& c) { return distance(c.p0, c.p2); }
+double chord_length(const CubicBez& c) { return distance(c.p0, c.p3); }
+
+// Is |C′| smooth enough on [t0, t1] for the Gauss rules' difference to be a trustworthy error
+// estimate? Gauss–Legendre converges geometrically at a rate set by how far the integrand's
+// nearest complex singularity is from the interval; for |C′| = √(x′² + y′²) that distance is
+// about |C′|/|C″|. Asking (t1 − t0)·|C″| ≤ |C′| at every node keeps it beyond the piece's own
+// width, where the 8-point rule is already good to ~1e-10 relative and the 16-point rule far
+// better. Near a cusp (C′ → 0) this fails and the piece is halved instead, which is what stops
+// the two rules from agreeing on a wrong answer.
+template <class Curve>
+bool speed_is_smooth(const Curve& c, double t0, double t1) {
+    const GaussLegendre<16>& g = rule<16>();
+    double half = 0.5 * (t1 - t0), mid = 0.5 * (t0 + t1);
+    auto dd = c.deriv();
+    for (int i = 0; i < 16; ++i) {
+        double t = mid + half * g.x[i];
+        if (2.0 * half * dd.deriv_at(t).length() > c.deriv_at(t).length()) return false;
+    }
+    return true;
+}
+
+// A piece is accepted when either
+//  (a) its control polygon and chord differ by ≤ 2·accuracy: the arc length lies between the
+//      two (chord ≤ L by the triangle inequality; L ≤ polygon because de Casteljau subdivision
+//      only shortens the polygon and converges to the curve), so their mean is within
+//      `accuracy` — rigorous, and what ends the recursion at cusps;
+//  (b) |C′| is smooth on it (above) and the 8- and 16-point rules differ by ≤ accuracy.
 template <class Curve>
 double adaptive(const Curve& c, double t0, double t1, double accuracy, int& splits_left) {
-    double coarse = gauss_speed_integral<8>(c, t0, t1);
+    Curve piece = c.subsegment(t0, t1);
+    double poly = polygon_length(piece), chord = chord_length(piece);
+    if (poly - chord <= 2.0 * accuracy) return 0.5 * (poly + chord);
     double fine = gauss_speed_integral<16>(c, t0, t1);
-    if (std::fabs(fine - coarse) <= accuracy || splits_left <= 0) return fine;
+    if (splits_left <= 0) return fine;
+    if (speed_is_smooth(c, t0, t1)) {
+        double coarse = gauss_speed_integral<8>(c, t0, t1);
+        if (std::fabs(fine - coarse) <= accuracy) return fine;
+    }
     --splits_left;
     double tm = 0.5 * (t0 + t1);
     return adaptive(c, t0, tm, 0.5 * accuracy, splits_left) +
            adaptive(c, tm, t1, 0.5 * accuracy, splits_left);
-}
-
-template <class Curve>
-double polygon_length(const Curve& c);
-template <>
-double polygon_length(const QuadBez& c) { return distance(c.p0, c.p1) + distance(c.p1, c.p2); }
-template <>
-double polygon_length(const CubicBez& c) {
-    return distance(c.p0, c.p1) + distance(c.p1, c.p2) + distance(c.p2, c.p3);
 }
 
 template <class Curve>
@@ -120,6 +151,7 @@ double inv_arclen_impl(const Curve& c, double s, double accuracy) {
     if (!c.is_finite() || !(s > 0.0)) return 0.0;
     double acc = 0.5 * effective_accuracy(c, accuracy);
     double total = arclen_range(c, 0.0, 1.0, acc);
+    if (!(total > 0.0)) return 0.0;  // a point: every t has length 0
     if (!(s < total)) return 1.0;
     double lo = 0.0, hi = 1.0;
     double t = s / total;
