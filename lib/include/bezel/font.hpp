@@ -55,6 +55,12 @@ struct OutlineOptions {
     bool hinting = false;     // false: unhinted, exact scaling; true: FreeType's hinter (native
                               // TrueType bytecode or CFF hinter, auto-hinter otherwise)
 };
+// Unhinted: FreeType loads the outline in font units (FT_LOAD_NO_SCALE) and bezel scales it by
+// size_px / units_per_em in double, with no rounding to FreeType's 1/64 px grid. The font units
+// are FreeType's: glyf points are integers, shifted so that the hmtx left side bearing holds;
+// composite transforms and variation deltas are applied by FreeType and rounded to units.
+// Hinted: FreeType scales and hints at size_px rounded to 1/64 px (TrueType fonts that ask for
+// integer ppem get it), and the result, in 26.6 pixels, is converted exactly.
 
 // How a point of the font's own outline data sits on the curve.
 enum class PointKind : std::uint8_t {
@@ -75,17 +81,27 @@ struct GlyphOutline {
     std::vector<OutlinePoint> points;        // the font's points after scaling, in font order
     std::vector<std::size_t> contour_ends;   // index in `points` of each contour's last point
     GlyphMetrics metrics;
+    // The font marks the contours as overlapping (glyf OVERLAP_SIMPLE / OVERLAP_COMPOUND).
+    // Signed-area accumulation rasterizers add the partial coverage of anti-aliased edges that
+    // overlap, which overestimates it there; FreeType renders such glyphs supersampled.
+    bool overlapping_contours = false;
 };
 
 // Largest em size accepted, in pixels: beyond it FreeType's 26.6 fixed point overflows.
 inline constexpr double kMaxFontSizePx = 16384.0;
+// Largest face index accepted: FreeType keeps the face in the low 16 bits of its index (the
+// high bits select a named instance of a variable font, which bezel does through variations).
+inline constexpr int kMaxFaceIndex = 0xFFFF;
 
 class Font {
 public:
     // Opens a font file (TTF, OTF, TTC/OTC with `face_index`). The error names the file and
-    // FreeType's reason.
+    // the problem: no such file, a directory, face index out of range (0..face count − 1), or
+    // FreeType's reason ("FreeType error 0x02 (unknown file format)"). FreeType reads tables
+    // lazily, so a damaged file may open and fail later, per glyph, with an error from outline().
     static Expected<Font> open(const std::string& file, int face_index = 0);
 
+    // A moved-from Font may only be destroyed or assigned to.
     Font(Font&&) noexcept;
     Font& operator=(Font&&) noexcept;
     Font(const Font&) = delete;
@@ -119,11 +135,23 @@ public:
     // The outline of `gid` at a size, y down, pen at the origin. Handles TrueType runs of
     // off-curve points, contours with no on-curve point, single-point contours, CFF cubics,
     // composite glyphs and empty glyphs (an empty path). Not const: FreeType loads into the face.
+    // The Path has the segments FreeType's FT_Outline_Decompose produces, in its order:
+    //   - every contour is closed; the line back to the start is the Close (not a Line) when the
+    //     contour ends on-curve, an explicit Quad/Cubic to the start when it ends off-curve;
+    //   - two consecutive conic points imply an on-curve point at their exact midpoint;
+    //   - a contour whose first point is off-curve starts at its last point if that is on-curve,
+    //     else at the midpoint of its last and first points (a contour with no on-curve point);
+    //   - a single on-curve point is a degenerate contour Move + Close (no segment), kept so that
+    //     the Path and `points` agree; a single off-curve point is Move p, Quad(p, p), Close.
+    // Errors name the file and the glyph id: size out of range, gid ≥ glyph_count(), a glyph
+    // FreeType cannot load (its reason), a bitmap-only font.
     Expected<GlyphOutline> outline(GlyphId gid, const OutlineOptions& options);
 
 private:
     struct Impl;
     explicit Font(std::unique_ptr<Impl> impl);
+    // outline() and glyph_metrics() share it; `want_path` false skips building the Path.
+    Expected<GlyphOutline> load_glyph(GlyphId gid, const OutlineOptions& options, bool want_path);
     std::unique_ptr<Impl> impl_;
 };
 

@@ -1,0 +1,111 @@
+// Font variations: listing a variable font's axes and setting design coordinates.
+//
+// FreeType describes axes in FT_MM_Var (16.16 fixed-point values in the axes' user units, e.g.
+// wght 100..900) and takes design coordinates in the same units.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "bezel/font.hpp"
+#include "font/font_impl.hpp"
+#include "font/ft_error.hpp"
+
+#include FT_MULTIPLE_MASTERS_H
+
+namespace bezel {
+
+namespace {
+
+// FT_Get_MM_Var's result, freed with FT_Done_MM_Var when this goes out of scope.
+struct MmVar {
+    FT_Library library = nullptr;
+    FT_MM_Var* var = nullptr;
+    MmVar() = default;
+    MmVar(const MmVar&) = delete;
+    MmVar& operator=(const MmVar&) = delete;
+    ~MmVar() {
+        if (var != nullptr) FT_Done_MM_Var(library, var);
+    }
+};
+
+// Fills `mm` for a face with variation axes; leaves it empty for any other face.
+void load_mm_var(FT_Library library, FT_Face face, MmVar& mm) {
+    mm.library = library;
+    if (!FT_HAS_MULTIPLE_MASTERS(face)) return;
+    if (FT_Get_MM_Var(face, &mm.var) != 0) mm.var = nullptr;
+}
+
+std::string tag_string(FT_ULong tag) {
+    std::string s(4, ' ');
+    for (int i = 0; i < 4; ++i) s[i] = static_cast<char>((tag >> (24 - 8 * i)) & 0xFF);
+    return s;
+}
+
+double from_fixed(FT_Fixed v) { return static_cast<double>(v) / 65536.0; }
+
+std::string format_number(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+}  // namespace
+
+std::vector<VariationAxis> Font::axes() const {
+    MmVar mm;
+    load_mm_var(impl_->library.get(), impl_->face.get(), mm);
+    std::vector<VariationAxis> axes;
+    if (mm.var == nullptr) return axes;
+    for (FT_UInt i = 0; i < mm.var->num_axis; ++i) {
+        const FT_Var_Axis& a = mm.var->axis[i];
+        VariationAxis axis;
+        axis.tag = tag_string(a.tag);
+        axis.name = (a.name != nullptr && a.name[0] != '\0') ? a.name : axis.tag;
+        axis.min_value = from_fixed(a.minimum);
+        axis.default_value = from_fixed(a.def);
+        axis.max_value = from_fixed(a.maximum);
+        axes.push_back(std::move(axis));
+    }
+    return axes;
+}
+
+Status Font::set_variations(const std::vector<VariationSetting>& settings) {
+    const std::string& file = impl_->file;
+    MmVar mm;
+    load_mm_var(impl_->library.get(), impl_->face.get(), mm);
+    if (mm.var == nullptr) {
+        if (settings.empty()) return ok_status();
+        return Error{file + ": variation axis '" + settings.front().tag +
+                     "': the font has no variation axes"};
+    }
+    std::vector<FT_Fixed> coords(mm.var->num_axis);
+    for (FT_UInt i = 0; i < mm.var->num_axis; ++i) coords[i] = mm.var->axis[i].def;
+
+    // Later settings of the same tag win, as in HarfBuzz's --variations.
+    for (const VariationSetting& s : settings) {
+        FT_UInt found = mm.var->num_axis;
+        for (FT_UInt i = 0; i < mm.var->num_axis; ++i) {
+            if (tag_string(mm.var->axis[i].tag) == s.tag) found = i;
+        }
+        if (found == mm.var->num_axis) {
+            return Error{file + ": unknown variation axis '" + s.tag + "'"};
+        }
+        const FT_Var_Axis& a = mm.var->axis[found];
+        const double lo = from_fixed(a.minimum), hi = from_fixed(a.maximum);
+        if (!(s.value >= lo && s.value <= hi)) {  // also rejects NaN
+            return Error{file + ": variation " + s.tag + "=" + format_number(s.value) +
+                         " out of range [" + format_number(lo) + ", " + format_number(hi) + "]"};
+        }
+        // Rounding to 16.16 can step just outside a bound that is not a multiple of 1/65536;
+        // clamp to FreeType's own fixed-point bounds.
+        const FT_Fixed v = static_cast<FT_Fixed>(std::lround(s.value * 65536.0));
+        coords[found] = std::min(std::max(v, a.minimum), a.maximum);
+    }
+    if (FT_Error e = FT_Set_Var_Design_Coordinates(impl_->face.get(), mm.var->num_axis,
+                                                   coords.data())) {
+        return Error{file + ": cannot set variations: " + font_detail::ft_error_text(e)};
+    }
+    return ok_status();
+}
+
+}  // namespace bezel
