@@ -221,7 +221,39 @@ TEST(SvgParseErrors, ArcsCannotExpandPastThePointLimit) {
     EXPECT_NE(e.find("points (kMaxSvgPathPoints)"), std::string::npos) << e;
 }
 
+TEST(SvgParseErrors, RandomBytesNeverCrashAndAlwaysExplain) {
+    // Strings over the path-data alphabet (plus a few strangers): each parse either succeeds
+    // with a finite path or fails with a message naming an offset inside the data.
+    std::mt19937_64 rng(43);
+    const std::string alphabet = "MmLlHhVvCcSsQqTtAaZz0123456789+-.eE ,\t\n#x\x7f";
+    int ok = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        std::string d = rng() % 2 ? "M" : "";
+        std::size_t n = rng() % 40;
+        for (std::size_t i = 0; i < n; ++i) d += alphabet[rng() % alphabet.size()];
+        Expected<Path> r = parse_svg_path(d);
+        if (r.ok()) {
+            ++ok;
+            ASSERT_TRUE(r->is_finite()) << d;
+            // What parses also survives the round trip.
+            Expected<Path> back = parse_svg_path(to_svg_path(*r));
+            ASSERT_TRUE(back.ok()) << d;
+            ASSERT_TRUE(bitwise_equal(*back, *r)) << d;
+        } else {
+            const std::string& m = r.error().message;
+            ASSERT_EQ(m.rfind("path data offset ", 0), 0u) << m;
+            std::size_t offset = std::stoul(m.substr(17));
+            ASSERT_LE(offset, d.size()) << m;
+        }
+    }
+    EXPECT_GT(ok, 100);  // the generator does reach valid data
+}
+
 // --- Arcs -------------------------------------------------------------------------------------
+
+TEST(SvgArc, NegativeRadiiCountByTheirMagnitude) {
+    EXPECT_TRUE(bitwise_equal(parse_ok("M0 0 A-5 -3 20 0 1 4 5"), parse_ok("M0 0 A5 3 20 0 1 4 5")));
+}
 
 TEST(SvgArc, ZeroRadiusIsALineAndAnArcToTheCurrentPointIsOmitted) {
     Path p = parse_ok("M1 1 A0 5 0 0 1 4 5 A3 0 0 0 1 1 1");
