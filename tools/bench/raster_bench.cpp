@@ -7,7 +7,7 @@
 // What is timed, per glyph, with the outline already loaded and converted outside the loop:
 //   freetype  memset of the target + FT_Outline_Render(FT_RASTER_FLAG_AA) into it (the smooth
 //             rasterizer flattens conics/cubics itself).
-//   bezel     Rasterizer::fill_path: flatten (kDefaultRasterTolerancePx = 1/64 px, WangUniform,
+//   bezel     Rasterizer::fill_path: flatten (kDefaultRasterTolerancePx = 0.01 px, WangUniform,
 //             or --tolerance) + rasterize;
 //             the fill writes every pixel, so clearing is included.
 //   stb       stbtt_Rasterize (flatness 0.35 px, as stbtt_GetGlyphBitmap uses), which writes every
