@@ -185,7 +185,8 @@ private:
 // Longest path data parse_svg_path accepts, in bytes of input.
 inline constexpr std::size_t kMaxSvgPathLength = std::size_t{16} << 20;  // 16 MiB
 // Most points a parsed path may hold. Arcs expand into up to kMaxCubicsPerArc cubics each, so
-// without this wall 16 MiB of arcs could ask for tens of gigabytes.
+// without this wall 16 MiB of arcs could ask for tens of gigabytes. Data without arcs never
+// reaches it: a point costs at least 4 bytes (".1.1"), so 16 MiB holds at most 4 Mi points.
 inline constexpr std::size_t kMaxSvgPathPoints = std::size_t{1} << 23;  // 8 Mi points, 128 MiB
 // Most cubics one elliptical arc becomes. 512 cubics over a full turn already put the
 // approximation error (≈ 6e-17 × radius) below double rounding, so the cap only binds when the
@@ -239,7 +240,9 @@ struct SvgArc {
 // Appends the arc from `from` (which should be the path's current point) to arc.to, following
 // SVG 1.1 F.6 as parse_svg_path does: nothing when from == arc.to, a line_to when a radius is 0,
 // otherwise cubic_to calls within `tolerance` (path units, > 0) of the true arc, the last ending
-// exactly at arc.to. Non-finite input yields non-finite points (check Path::is_finite()).
+// exactly at arc.to (also a line_to when the chord is below double resolution against the radii,
+// chord/radius < ~1e-308). Non-finite input, or radii so extreme that the ellipse overflows,
+// yields non-finite points (check Path::is_finite(); parse_svg_path reports them as errors).
 void append_svg_arc(Path& path, Point from, const SvgArc& arc, double tolerance);
 
 }  // namespace bezel
