@@ -113,6 +113,13 @@ void pair_pieces(const Scalar& fa, const Mono& pa, const Scalar& fb, const Mono&
 }  // namespace
 
 bool collinear_pair(const Curve& a, const Curve& b, Raw& raw) {
+    // Quick reject, the usual case: a curve bulging away from its own chord by more than the
+    // tolerance is not straight. (|chord × (P − P₀)| > kTouch·|chord| with |chord| ≤ 4 here.)
+    for (const Curve* c : {&a, &b}) {
+        Vec2 chord = c->end() - c->start();
+        for (int i = 1; i < c->degree; ++i)
+            if (std::fabs(chord.cross(c->p[i] - c->p[0])) > 4.0 * kTouch) return false;
+    }
     Point o;
     Vec2 r;
     if (!common_line(a, b, o, r)) return false;

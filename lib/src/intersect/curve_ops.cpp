@@ -117,8 +117,8 @@ Curve subsegment(const Curve& c, double t0, double t1) {
 
 double control_extent(const Curve& c) {
     double m = 0.0;
-    for (int i = 1; i <= c.degree; ++i) m = std::max(m, distance(c.p[0], c.p[i]));
-    return m;
+    for (int i = 1; i <= c.degree; ++i) m = std::max(m, (c.p[i] - c.p[0]).length_squared());
+    return std::sqrt(m);
 }
 
 void bernstein_to_power(const double* v, int n, double out[4]) {
@@ -208,9 +208,10 @@ bool newton_cross(const Curve& a, const Curve& b, double& s, double& t, double s
     //   Δs = (f × −B′)/(A′ × −B′) = (f × B′)/D,   Δt = (A′ × f)/(A′ × −B′) = −(A′ × f)/D.
     const double s_min = s_lo - margin, s_max = s_hi + margin;
     const double t_min = t_lo - margin, t_max = t_hi + margin;
+    bool converging = false;
     for (int it = 0; it < 24; ++it) {
-        Vec2 f = b.eval(t) - a.eval(s);
-        Vec2 da = a.deriv_at(s), db = b.deriv_at(t);
+        PointDeriv ea = eval_with_deriv(a, s), eb = eval_with_deriv(b, t);
+        Vec2 f = eb.p - ea.p, da = ea.d, db = eb.d;
         double det = da.cross(db);
         if (det == 0.0 || !std::isfinite(det)) return false;
         double ds = f.cross(db) / det;
@@ -222,7 +223,10 @@ bool newton_cross(const Curve& a, const Curve& b, double& s, double& t, double s
         if (!(s >= s_lo - ws - margin && s <= s_hi + ws + margin && t >= t_lo - wt - margin &&
               t <= t_hi + wt + margin))
             return false;
+        // Quadratic convergence: once a step is below 1e-9, the next one is at rounding level.
         if (std::fabs(ds) <= 1e-15 && std::fabs(dt) <= 1e-15) break;
+        if (std::fabs(ds) <= 1e-9 && std::fabs(dt) <= 1e-9) converging = true;
+        else if (converging) return false;  // it was not converging after all
         if (it == 23) return false;
     }
     return s >= s_min && s <= s_max && t >= t_min && t <= t_max;

@@ -44,6 +44,30 @@ inline Rect control_box(const Curve& c) {
     for (int i = 2; i <= c.degree; ++i) r = r.union_with(c.p[i]);
     return r;
 }
+// Point and first derivative together, in Bernstein form with u = 1 − t:
+//   C = u³P₀ + 3u²t·P₁ + 3ut²·P₂ + t³P₃,   C′ = 3[u²(P₁ − P₀) + 2ut(P₂ − P₁) + t²(P₃ − P₂)]
+// (and the quadratic/linear analogues). For t in [0, 1] the weights are non-negative, so the
+// error is a few ulps of the control points' magnitude — as de Casteljau — at a third of the
+// cost; Newton's iterations, which evaluate the most, use it.
+struct PointDeriv {
+    Point p;
+    Vec2 d;
+};
+inline PointDeriv eval_with_deriv(const Curve& c, double t) {
+    const double u = 1.0 - t;
+    const Point* q = c.p;
+    switch (c.degree) {
+        case 1: return {q[0] * u + q[1] * t, q[1] - q[0]};
+        case 2:
+            return {q[0] * (u * u) + q[1] * (2.0 * u * t) + q[2] * (t * t),
+                    ((q[1] - q[0]) * u + (q[2] - q[1]) * t) * 2.0};
+        default: {
+            const double u2 = u * u, t2 = t * t, ut = u * t;
+            return {q[0] * (u2 * u) + q[1] * (3.0 * u2 * t) + q[2] * (3.0 * u * t2) + q[3] * (t2 * t),
+                    ((q[1] - q[0]) * u2 + (q[2] - q[1]) * (2.0 * ut) + (q[3] - q[2]) * t2) * 3.0};
+        }
+    }
+}
 // Largest distance of a control point from p[0]: 0 for a curve collapsed to a point.
 double control_extent(const Curve& c);
 // Power-basis coefficients of the scalar Bézier with control values v[0..n]:
@@ -93,8 +117,11 @@ void line_curve(const Curve& line, const Curve& b, Raw& raw, bool swapped);
 void point_curve(Point p, const Curve& b, Raw& raw, bool swapped);
 // Looks for one coincident piece of two curves of degree ≥ 2; appends it and returns true.
 bool find_overlap(const Curve& a, const Curve& b, CurveOverlap& out);
-// Curve–curve by subdivision with the isolation test, Newton, and the tangent resolver.
-void curve_curve(const Curve& a, const Curve& b, Raw& raw);
+// Curve–curve by subdivision with the isolation test, Newton, and the tangent resolver. With
+// `probe`, the first pair still not isolated at width kOverlapProbeWidth triggers find_overlap;
+// if that finds one, it is stored in *probe, true is returned and raw's hits are meaningless.
+bool curve_curve(const Curve& a, const Curve& b, Raw& raw, CurveOverlap* probe);
+inline constexpr double kOverlapProbeWidth = 1.0 / 64;
 // Clusters of unresolved leaf boxes (near tangencies): resolves them into hits.
 struct Leaf {
     double s0, s1, t0, t1;

@@ -2,7 +2,6 @@
 // points that belong to an overlap, merging of duplicates and near-tangent twins, classification.
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "intersect/curve_ops.hpp"
 
@@ -62,88 +61,87 @@ void finish(const Curve& a, const Curve& b, const Curve& orig_a, Raw& raw,
             CurveIntersections& out) {
     std::vector<Hit>& hits = raw.hits;
     // Endpoints shared by both curves, exactly.
-    for (double ea : {0.0, 1.0})
-        for (double eb : {0.0, 1.0})
-            if (distance(a.eval(ea), b.eval(eb)) <= kTouch) hits.push_back({ea, eb, Source::Endpoint});
+    const double touch2 = kTouch * kTouch;
+    for (int ea = 0; ea < 2; ++ea)
+        for (int eb = 0; eb < 2; ++eb)
+            if ((a.p[ea * a.degree] - b.p[eb * b.degree]).length_squared() <= touch2)
+                hits.push_back({double(ea), double(eb), Source::Endpoint});
 
-    // Clamp, snap, validate.
-    std::vector<Hit> kept;
-    kept.reserve(hits.size());
+    // Clamp, snap, validate (nothing further than 2·kTouch apart survives: invents nothing);
+    // points inside or at the ends of an overlap belong to it.
+    merge_overlaps(raw.overlaps);
+    const double m = kTangentMergeParam;
+    auto in_overlap = [&](const Hit& h) {
+        for (const CurveOverlap& o : raw.overlaps) {
+            double b0 = std::min(o.t_b0, o.t_b1), b1 = std::max(o.t_b0, o.t_b1);
+            if (h.s >= o.t_a0 - m && h.s <= o.t_a1 + m && h.t >= b0 - m && h.t <= b1 + m) return true;
+        }
+        return false;
+    };
+    std::size_t w = 0;
     for (Hit h : hits) {
         h.s = std::clamp(h.s, 0.0, 1.0);
         h.t = std::clamp(h.t, 0.0, 1.0);
         snap(a, b, h.s, h.t);
         snap(b, a, h.t, h.s);
-        if (distance(a.eval(h.s), b.eval(h.t)) > 2.0 * kTouch) continue;  // invents nothing
-        kept.push_back(h);
+        if ((a.eval(h.s) - b.eval(h.t)).length_squared() > 4.0 * touch2) continue;
+        if (in_overlap(h)) continue;
+        hits[w++] = h;
     }
-
-    // Points inside (or at the ends of) an overlap are part of it.
-    merge_overlaps(raw.overlaps);
-    const double m = kTangentMergeParam;
-    kept.erase(std::remove_if(kept.begin(), kept.end(),
-                              [&](const Hit& h) {
-                                  for (const CurveOverlap& o : raw.overlaps) {
-                                      double b0 = std::min(o.t_b0, o.t_b1), b1 = std::max(o.t_b0, o.t_b1);
-                                      if (h.s >= o.t_a0 - m && h.s <= o.t_a1 + m && h.t >= b0 - m &&
-                                          h.t <= b1 + m)
-                                          return true;
-                                  }
-                                  return false;
-                              }),
-               kept.end());
+    hits.resize(w);
 
     // Merge twins: the same root found twice, or the noisy sign changes around one contact.
-    const int n = static_cast<int>(kept.size());
-    std::vector<int> group(kept.size());
-    std::iota(group.begin(), group.end(), 0);
+    // Union–find over at most a few dozen hits; `best` is each group's representative.
+    const int n = static_cast<int>(hits.size());
+    std::vector<int> group(2 * hits.size());
+    int* parent = group.data();
+    int* best = parent + n;
+    for (int i = 0; i < n; ++i) parent[i] = i, best[i] = -1;
     auto root = [&](int i) {
-        while (group[i] != i) i = group[i] = group[group[i]];
+        while (parent[i] != i) i = parent[i] = parent[parent[i]];
         return i;
     };
     for (int i = 0; i < n; ++i)
         for (int j = i + 1; j < n; ++j) {
-            const Hit &p = kept[i], &q = kept[j];
+            const Hit &p = hits[i], &q = hits[j];
             if (std::fabs(p.s - q.s) > m || std::fabs(p.t - q.t) > m) continue;
             // Two real crossings this close keep apart only if the curves separate between them.
             Point mid_a = a.eval(0.5 * (p.s + q.s)), mid_b = b.eval(0.5 * (p.t + q.t));
-            if (distance(mid_a, mid_b) > 4.0 * kTouch) continue;
-            group[root(j)] = root(i);
+            if ((mid_a - mid_b).length_squared() > 16.0 * touch2) continue;
+            parent[root(j)] = root(i);
         }
-    std::vector<int> best(kept.size(), -1), members(kept.size(), 0);
-    std::vector<bool> spread(kept.size(), false);
     for (int i = 0; i < n; ++i) {
         int r = root(i);
-        ++members[r];
-        if (best[r] < 0 || rank(kept[i]) > rank(kept[best[r]])) best[r] = i;
-    }
-    for (int i = 0; i < n; ++i) {
-        int r = root(i), b0 = best[r];
-        if (std::fabs(kept[i].s - kept[b0].s) > 1e-12 || std::fabs(kept[i].t - kept[b0].t) > 1e-12)
-            spread[r] = true;
+        if (best[r] < 0 || rank(hits[i]) > rank(hits[best[r]])) best[r] = i;
     }
 
     out.points.clear();
     for (int r = 0; r < n; ++r) {
         if (root(r) != r) continue;
-        const Hit& h = kept[best[r]];
+        const Hit& h = hits[best[r]];
+        // A group whose members differ is a contact seen as several nearby roots.
+        bool spread = false;
+        for (int i = 0; i < n; ++i)
+            if (root(i) == r)
+                spread |= std::fabs(hits[i].s - h.s) > 1e-12 || std::fabs(hits[i].t - h.t) > 1e-12;
         CurveIntersection ci;
         ci.t_a = h.s;
         ci.t_b = h.t;
         ci.point = orig_a.eval(h.s);
         if (is_end(h.s) || is_end(h.t))
             ci.kind = IntersectionKind::Endpoint;
-        else if (h.source == Source::Tangent || spread[r] ||
+        else if (h.source == Source::Tangent || spread ||
                  sine_between(a.deriv_at(h.s), b.deriv_at(h.t)) < kTangentSine)
             ci.kind = IntersectionKind::Tangent;
         else
             ci.kind = IntersectionKind::Cross;
         out.points.push_back(ci);
     }
-    std::sort(out.points.begin(), out.points.end(),
-              [](const CurveIntersection& l, const CurveIntersection& r) {
-                  return l.t_a != r.t_a ? l.t_a < r.t_a : l.t_b < r.t_b;
-              });
+    if (out.points.size() > 1)
+        std::sort(out.points.begin(), out.points.end(),
+                  [](const CurveIntersection& l, const CurveIntersection& r) {
+                      return l.t_a != r.t_a ? l.t_a < r.t_a : l.t_b < r.t_b;
+                  });
     out.overlaps = raw.overlaps;
 }
 

@@ -13,10 +13,8 @@ namespace {
 // Solves A against B (frame space), both not collapsed to a point and not collinear.
 void curves_with_overlap(const Curve& a, const Curve& b, Raw& raw) {
     CurveOverlap ov;
-    if (!find_overlap(a, b, ov)) {
-        curve_curve(a, b, raw);
-        return;
-    }
+    if (!curve_curve(a, b, raw, &ov)) return;
+    raw.hits.clear();
     raw.overlaps.push_back(ov);
     // Outside the overlap the curves may still meet: the remainder of each (at most two pieces,
     // for the shared stretch ends where one of the curves ends) against the whole other. The
@@ -26,9 +24,9 @@ void curves_with_overlap(const Curve& a, const Curve& b, Raw& raw) {
     auto solve_piece = [&](bool piece_of_a, double lo, double hi) {
         Raw sub;
         if (piece_of_a)
-            curve_curve(subsegment(a, lo, hi), b, sub);
+            curve_curve(subsegment(a, lo, hi), b, sub, nullptr);
         else
-            curve_curve(a, subsegment(b, lo, hi), sub);
+            curve_curve(a, subsegment(b, lo, hi), sub, nullptr);
         raw.work += sub.work;
         raw.over_budget |= sub.over_budget;
         for (Hit h : sub.hits) {
