@@ -11,7 +11,7 @@
 // mean offset m = (xa + xb)/2 − i, pixel i gets dy·(1 − m) and every pixel after it gets dy, so
 // as DELTAS:  acc[i] += dy·(1 − m),  acc[i+1] += dy·m.
 // A piece crossing several columns is cut at each integer x into sub-pieces with dy_k =
-// s·width_k (s = dy/dx of the edge), each handled as above. Summed over a closed polygon, each
+// s·width_k (s = dy/dx of the piece), each handled as above. Summed over a closed polygon, each
 // row's deltas add to zero past the polygon, and the prefix sum is the signed coverage
 // (winding-number weighted area) of each pixel.
 #pragma once
@@ -41,11 +41,9 @@ inline void mark_cells(std::uint8_t* frow, int i0, int i1) {
     for (int b = b0 + 1; b < b1; ++b) frow[b] = 1;
 }
 
-// Adds one in-row piece (xa → xb, vertical extent dy) to the deltas of one row. `s` is the
-// edge's signed dy/|dx| (used only when the piece crosses a column boundary).
+// Adds one in-row piece (xa → xb, vertical extent dy) to the deltas of one row.
 // Precondition: 0 ≤ xa, xb ≤ width, so indices ≤ width + 1 < stride.
-inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb, double dy,
-                           double s) {
+inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb, double dy) {
     if (xa > xb) std::swap(xa, xb);
     const int i0 = static_cast<int>(xa);  // floor: xa ≥ 0
     const int i1 = static_cast<int>(xb);
@@ -57,10 +55,13 @@ inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb,
         mark_cells(frow, i0, i0 + 1);
         return;
     }
-    // Several columns. The first sub-piece has width w0 = (i0+1) − xa and mean offset
-    // 1 − w0/2, so it adds s·w0·(w0/2) to acc[i0] and s·w0·(1 − w0/2) to acc[i0+1]. Each full
-    // column adds s/2 to itself and s/2 to the next; the last sub-piece (width w1 = xb − i1,
-    // mean offset w1/2) adds s·w1·(1 − w1/2) to acc[i1] and s·w1·(w1/2) to acc[i1+1].
+    // Several columns; s = dy per unit of x (xb − xa ≥ the part past a column boundary > 0, and
+    // a tiny width only makes s large, not inexact: s·width below gives back the piece's dy).
+    // The first sub-piece has width w0 = (i0+1) − xa and mean offset 1 − w0/2, so it adds
+    // s·w0·(w0/2) to acc[i0] and s·w0·(1 − w0/2) to acc[i0+1]. Each full column adds s/2 to
+    // itself and s/2 to the next; the last sub-piece (width w1 = xb − i1, mean offset w1/2) adds
+    // s·w1·(1 − w1/2) to acc[i1] and s·w1·(w1/2) to acc[i1+1].
+    const double s = dy / (xb - xa);
     const double w0 = (i0 + 1) - xa;
     const double d0 = s * w0;
     row[i0] += static_cast<float>(d0 * (0.5 * w0));
@@ -87,20 +88,23 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
         std::swap(y0, y1);
         dir = -1.0;
     }
-    const double dxdy = (x1 - x0) / (y1 - y0);
-    const double s = x1 != x0 ? dir * (y1 - y0) / std::fabs(x1 - x0) : 0.0;
-    const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
     int j = static_cast<int>(y0);  // floor, y0 ≥ 0
     int jend = static_cast<int>(y1);
     if (jend < y1) ++jend;          // ceil
     float* row = band.acc + j * band.stride;
     std::uint8_t* frow = band.flags + j * band.flag_stride;
+    if (jend - j == 1) {  // inside one row (most edges of small glyphs): no division
+        draw_row_piece(row, frow, x0, x1, dir * (y1 - y0));
+        return;
+    }
+    const double dxdy = (x1 - x0) / (y1 - y0);
+    const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
     double ya = y0, xa = x0;
     for (; j < jend; ++j, row += band.stride, frow += band.flag_stride) {
         const double yb = std::min(y1, static_cast<double>(j + 1));
         // Clamped to the edge's own x range: rounding must not push an index past the band.
         const double xb = yb == y1 ? x1 : std::clamp(x0 + (yb - y0) * dxdy, xlo, xhi);
-        draw_row_piece(row, frow, xa, xb, dir * (yb - ya), s);
+        draw_row_piece(row, frow, xa, xb, dir * (yb - ya));
         ya = yb;
         xa = xb;
     }

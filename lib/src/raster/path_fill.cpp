@@ -20,7 +20,7 @@ double wang_segments(const Point* p, int degree, const Affine& m, double tol) {
     double max_dd = 0.0;
     for (int i = 0; i + 2 <= degree; ++i) {
         Vec2 dd = m.apply_vector(p[i] - 2.0 * p[i + 1] + p[i + 2]);
-        max_dd = std::max(max_dd, dd.length());
+        max_dd = std::max(max_dd, std::sqrt(dd.length_squared()));  // hypot is slow, range is not an issue
     }
     const double n = std::ceil(std::sqrt(degree * (degree - 1) * max_dd / (8.0 * tol)));
     // A NaN control point is flatten_checked's to report, with its index; count it as one.
@@ -30,6 +30,22 @@ double wang_segments(const Point* p, int degree, const Affine& m, double tol) {
 // Estimated segments of the flattened path, saturating: the caller only compares with kMaxEdges.
 double estimate_segments(const Path& path, const Affine& m, double tol) {
     const std::vector<Point>& pts = path.points();
+    // Cheap bound first. Every control point lies in the control box, of diagonal D after the
+    // transform, so each second difference is ≤ 2D (two steps each ≤ D), and a cubic — the worse
+    // degree — needs at most ⌈√(6·2D / (8·tol))⌉ = ⌈√(1.5·D/tol)⌉ steps. If even every verb at
+    // that count fits, skip the per-curve pass (always, for glyphs).
+    Rect box = Rect::empty();
+    for (const Point& p : pts) box = box.union_with(p);
+    if (!pts.empty()) {
+        Rect tb = Rect::empty();
+        for (Point c : {Point{box.x0, box.y0}, Point{box.x1, box.y0}, Point{box.x0, box.y1},
+                        Point{box.x1, box.y1}})
+            tb = tb.union_with(m * c);
+        const double diag = std::sqrt(tb.width() * tb.width() + tb.height() * tb.height());
+        const double worst = static_cast<double>(path.verbs().size()) *
+                             (std::ceil(std::sqrt(1.5 * diag / tol)) + 1.0);
+        if (worst <= static_cast<double>(kMaxEdges)) return worst;
+    }
     std::size_t pi = 0;
     double total = 0.0;
     const double per_curve_cap = static_cast<double>(kMaxSegmentsPerCurve);
