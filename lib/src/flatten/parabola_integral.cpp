@@ -105,6 +105,13 @@ bool parabola_integral(const QuadBez& q, double tolerance_px, std::vector<Point>
 }
 
 bool parabola_integral(const CubicBez& c, double tolerance_px, std::vector<Point>& out) {
+    // A cubic already within tolerance of its chord (short or straight ones: many in fonts) is its
+    // chord; the parametric cubic-to-quadratic bound below would split a straight but unevenly
+    // parametrized cubic needlessly.
+    if (cubic_chord_bound_squared(c.p0, c.p1, c.p2, c.p3) <= tolerance_px * tolerance_px) {
+        out.push_back(c.p3);
+        return true;
+    }
     const Vec2 d = c.p3 - c.p0 + (c.p1 - c.p2) * 3.0;
     const double quad_tol = kCubicToQuadShare * tolerance_px;
     const double m_real = std::cbrt(std::sqrt(3.0) / 36.0 * d.length() / quad_tol);
