@@ -12,11 +12,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <unistd.h>
@@ -38,6 +40,10 @@ const std::string kCantarell = kFonts + "/cantarell/Cantarell-Regular.otf";
 const std::string kEdge = kFonts + "/edge-cases/EdgeCases.ttf";
 const std::string kEdgeVariable = kFonts + "/edge-cases/EdgeCasesVariable.ttf";
 const std::string kEdgeCollection = kFonts + "/edge-cases/EdgeCases.ttc";
+
+// FreeType ≤ 2.13.2 declares contour indices and counts `short`, later versions unsigned.
+using ContourIndex = std::remove_pointer_t<decltype(FT_Outline::contours)>;
+using OutlineCount = decltype(FT_Outline::n_points);
 
 // Coordinates in the edge-case fonts are font units; at this size a pixel is a font unit.
 constexpr double kEdgeUpem = 1000.0;
@@ -312,7 +318,7 @@ TEST(OutlineConvert, RandomTagSequencesMatchFreeTypeDecompose) {
         const bool anything = percent(rng) < 25;
         std::vector<FT_Vector> pts;
         std::vector<char> tags;
-        std::vector<short> ends;
+        std::vector<ContourIndex> ends;
         const int contours = contour_count(rng);
         for (int c = 0; c < contours; ++c) {
             const int length = contour_length(rng);
@@ -338,11 +344,11 @@ TEST(OutlineConvert, RandomTagSequencesMatchFreeTypeDecompose) {
                     push(FT_CURVE_TAG_CUBIC);
                 }
             }
-            ends.push_back(static_cast<short>(pts.size() - 1));
+            ends.push_back(static_cast<ContourIndex>(pts.size() - 1));
         }
         FT_Outline outline{};
-        outline.n_contours = static_cast<short>(ends.size());
-        outline.n_points = static_cast<short>(pts.size());
+        outline.n_contours = static_cast<OutlineCount>(ends.size());
+        outline.n_points = static_cast<OutlineCount>(pts.size());
         outline.points = pts.data();
         outline.tags = tags.data();
         outline.contours = ends.data();
@@ -379,19 +385,19 @@ TEST(OutlineConvert, MalformedStructureIsAnErrorNotACrash) {
     std::vector<OutlinePoint> points;
     std::vector<std::size_t> ends;
 
-    short decreasing[2] = {2, 1};
+    ContourIndex decreasing[2] = {2, 1};
     FT_Outline o{2, 3, pts, tags, decreasing, 0};
     EXPECT_FALSE(font_detail::read_ft_outline(o, 1.0, points, ends));
 
-    short past_end[1] = {3};
+    ContourIndex past_end[1] = {3};
     o = FT_Outline{1, 3, pts, tags, past_end, 0};
     EXPECT_FALSE(font_detail::read_ft_outline(o, 1.0, points, ends));
 
-    short short_of_end[1] = {1};
+    ContourIndex short_of_end[1] = {1};
     o = FT_Outline{1, 3, pts, tags, short_of_end, 0};
     EXPECT_FALSE(font_detail::read_ft_outline(o, 1.0, points, ends));
 
-    short ok_end[1] = {2};
+    ContourIndex ok_end[1] = {2};
     char bad_tags[3] = {FT_CURVE_TAG_ON, 3, FT_CURVE_TAG_ON};
     o = FT_Outline{1, 3, pts, bad_tags, ok_end, 0};
     Status s = font_detail::read_ft_outline(o, 1.0, points, ends);

@@ -6,6 +6,7 @@
 // size_px / units_per_em. Scaling in FreeType instead (FT_Set_Char_Size) rounds every point to
 // 1/64 px, which is visible when an outline is magnified or compared across sizes.
 // Hinted outlines need the size set on the face, so they come from FreeType in 26.6 pixels.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -118,7 +119,8 @@ bool Font::is_scalable() const { return FT_IS_SCALABLE(impl_->face.get()); }
 bool Font::has_cubic_outlines() const {
     // FreeType names every PostScript-outline format: "CFF" covers OpenType CFF and CFF2 and
     // bare CFF; "Type 1" and "CID Type 1" the older ones. TrueType and Type 42 are quadratic.
-    const std::string format = FT_Get_Font_Format(impl_->face.get());
+    const char* name = FT_Get_Font_Format(impl_->face.get());
+    const std::string format = name != nullptr ? name : "";
     return format == "CFF" || format == "Type 1" || format == "CID Type 1";
 }
 
