@@ -686,6 +686,20 @@ TEST(ArcLength, AdditiveOverSplitsAndMeetsRequestedAccuracy) {
     }
 }
 
+TEST(ArcLength, NearCuspCurvesMeetRequestedAccuracy) {
+    // The cusp curve (0,0) (1,1) (0,1) (1,0), scaled by 100, with its end nudged by up to 1e-3:
+    // tiny loops and needle-sharp turns, where |C′| almost vanishes and two Gauss rules can agree
+    // on a wrong value. Each accuracy must hold against a 1e-11 result (whose own error is
+    // bounded by the rigorous chord/polygon bracket at the cusp).
+    Rng rng(29);
+    for (int i = 0; i < 500; ++i) {
+        Vec2 nudge = rng.point(1e-3);
+        CubicBez c{{0, 0}, {100, 100}, {0, 100}, Point{100, 0} + nudge};
+        double fine = c.arclen(1e-11);
+        for (double acc : {1e-1, 1e-3, 1e-6, 1e-9}) EXPECT_NEAR(c.arclen(acc), fine, acc) << i;
+    }
+}
+
 TEST(ArcLength, CuspAndDegenerateCurvesTerminate) {
     CubicBez cusp{{0, 0}, {1, 1}, {0, 1}, {1, 0}};
     EXPECT_NEAR(cusp.arclen(1e-10), reference_length(cusp), 1e-7);

@@ -158,7 +158,7 @@ int solve_quadratic(double a, double b, double c, double roots[2]);
 // critical points from solve_quadratic split the line into monotone pieces, each searched by
 // bracketed Newton iteration with bisection fallback (Yuksel, "High-Performance Polynomial Root
 // Finding for Graphics", HPG 2022), so every root is polished to full precision and the work is
-// bounded (≤ 64 bisections per root, typically under 10 evaluations in all).
+// bounded (at most 300 evaluations per root; 6–13 on average in tests, 63 at most seen).
 int solve_cubic(double a, double b, double c, double d, double roots[3]);
 
 // As above, keeping only roots in [t_min, t_max] (closed interval), still sorted and distinct.

@@ -89,9 +89,9 @@ struct Cubic {
     }
 };
 
-// Doubles mapped to integers in the same order (−0 and +0 both to 0), so the midpoint of two
-// keys halves the number of doubles in between: bisection on these ends in ≤ 64 steps whatever
-// the bracket's magnitude, where halving the real interval [0, 2³⁴⁰] would take ~1100.
+// Doubles mapped to integers in the same order (−0 and +0 both to 0): the midpoint of two keys
+// is the middle in binades, so halving a bracket like [1, 2³⁴⁰] takes ~9 steps where halving the
+// real interval would take ~340.
 std::int64_t order_key(double x) {
     std::int64_t i = 0;
     std::memcpy(&i, &x, sizeof i);
@@ -103,48 +103,65 @@ double from_order_key(std::int64_t k) {
     std::memcpy(&x, &i, sizeof x);
     return x;
 }
-double bisect_ordered(double lo, double hi) {
-    std::int64_t kl = order_key(lo), kh = order_key(hi);
-    // kh − kl can exceed INT64_MAX; the unsigned difference is exact modulo 2⁶⁴.
-    std::uint64_t span = static_cast<std::uint64_t>(kh) - static_cast<std::uint64_t>(kl);
-    return from_order_key(kl + static_cast<std::int64_t>(span / 2));
+
+// The bisection point of [lo, hi] when the ends are more than 16× apart in magnitude (roots of
+// very different sizes, or a bracket from a root bound): 0 if the bracket straddles it, else the
+// middle in binades. Otherwise the arithmetic middle. Why not always binades: across 0 the
+// middle in binades is ~1e-300, far from any root a moderate bracket holds, and each bisection
+// after that climbs back only a few binades. (0 is never a root here: p(0) = d ≠ 0.)
+double bisection_point(double lo, double hi) {
+    double alo = std::fabs(lo), ahi = std::fabs(hi);
+    if (std::max(alo, ahi) > 16.0 * std::min(alo, ahi)) {
+        if (lo < 0.0 && hi > 0.0) return 0.0;
+        if (lo != 0.0 && hi != 0.0) {
+            std::int64_t kl = order_key(lo), kh = order_key(hi);
+            return from_order_key(kl + (kh - kl) / 2);  // same sign: no overflow in kh − kl
+        }
+    }
+    return 0.5 * (lo + hi);  // |lo|, |hi| ≤ 2³⁴⁰: no overflow
 }
 
-// The root of p in (lo, hi), where p is monotone and p(lo), p(hi) are non-zero with opposite
-// signs. Newton's step when it lands inside the bracket and at least halves the previous step
-// (the rtsafe strategy of Numerical Recipes §9.4), ordered bisection otherwise. Newton converges
-// quadratically once close, but far from the root it can crawl (a step that exactly halves each
-// time, as on x² far out); so after kMaxNewtonRun Newton steps in a row without converging, one
-// bisection is forced. The bracket's ordered width halves at every bisection, so the work is
-// bounded by 64 bisections with kMaxNewtonRun Newton steps between them; typically < 10 in all.
-constexpr int kMaxNewtonRun = 8;
+// Work limit of one root search (evaluations of p); the most seen over 2·10⁵ random cubics is 63
+// (see the starting points in solve_cubic). It turns a logic error into a slightly inaccurate
+// root instead of a hang.
+constexpr int kMaxRootIterations = 300;
+// Newton steps allowed in a row before a bisection is forced (see bracketed_root).
+constexpr int kMaxNewtonRun = 16;
 
-double bracketed_root(const Cubic& p, double lo, double hi, bool f_lo_negative) {
-    double x = bisect_ordered(lo, hi);  // the middle in binades: right for spans like [−2³⁴⁰, 1]
+// The root of p in (lo, hi), where p is monotone and p(lo), p(hi) are non-zero with opposite
+// signs, starting from `start` in [lo, hi]. Newton's step when it lands inside the bracket and
+// is shorter than the previous step (after rtsafe, Numerical Recipes §9.4), bisection
+// otherwise. Newton converges quadratically once close, but far from the root it can crawl (a
+// step that exactly halves each time, as on x² far out), so after kMaxNewtonRun Newton steps in
+// a row one bisection is forced. Ends when the bracket is a few ulps wide or Newton's step is
+// below an ulp or two; typically after 5–8 evaluations.
+double bracketed_root(const Cubic& p, double lo, double hi, bool f_lo_negative, double start) {
+    double x = start;
     double prev_step = hi - lo;
     int newton_run = 0;
-    for (int iter = 0; iter < 64 * (kMaxNewtonRun + 1) + 2; ++iter) {
+    for (int iter = 0; iter < kMaxRootIterations; ++iter) {
         double fx = p.f(x);
         if (fx == 0.0) return x;
         if ((fx < 0.0) == f_lo_negative) lo = x; else hi = x;
-        if (std::nextafter(lo, hi) >= hi) {
-            // Adjacent doubles: the sign change is between them; pick the smaller residual.
+        if (hi - lo <= 2.0 * kEps * std::max(std::fabs(lo), std::fabs(hi)) ||
+            std::nextafter(lo, hi) >= hi) {
+            // The sign change is pinned to an ulp or two: pick the smaller residual.
             return std::fabs(p.f(lo)) <= std::fabs(p.f(hi)) ? lo : hi;
         }
         double dfx = p.df(x);
         double xn = dfx != 0.0 ? x - fx / dfx : lo;
         double step = xn - x;
+        // Newton converges quadratically near a simple root: a step this small means x is
+        // already correct to the last bit or two (even if rounding put xn just outside).
+        if (std::fabs(step) <= 2.0 * kEps * std::fabs(x)) return x;
         if (newton_run < kMaxNewtonRun && xn > lo && xn < hi &&
-            std::fabs(step) <= 0.5 * std::fabs(prev_step)) {
+            std::fabs(step) < std::fabs(prev_step)) {
             ++newton_run;
             prev_step = step;
             x = xn;
-            // Newton converges quadratically near a simple root: a step this small means x is
-            // already correct to the last bit or two.
-            if (std::fabs(step) <= 2.0 * kEps * std::fabs(x)) return x;
         } else {
             newton_run = 0;
-            x = bisect_ordered(lo, hi);
+            x = bisection_point(lo, hi);
             prev_step = hi - lo;
         }
     }
@@ -210,10 +227,21 @@ int solve_cubic(double a, double b, double c, double d, double roots[3]) {
         bool is_crit = i > 0 && i < k - 1;
         if (is_crit && std::fabs(fs[i]) <= 8.0 * kEps * p.magnitude(xs[i])) fs[i] = 0.0;
     }
+    // Starting points: between two critical points, the inflection −b/3a, where |p′| is largest,
+    // so Newton's first step cannot overshoot (|p(x)|/|p′(x)| ≤ |x − root| by the mean value
+    // theorem) and it converges monotonically from there. Elsewhere the bisection point. (Measured
+    // over 10⁵ random cubics: 6.5 evaluations per root on average for coefficients uniform in
+    // [−100, 100], 13 for roots spread over ±12 decades; at most 63.)
+    double inflection = -p.b / (3.0 * p.a);
     for (int i = 0; i < k; ++i) {
         if (fs[i] == 0.0) r[n++] = xs[i];
-        if (i + 1 < k && fs[i] != 0.0 && fs[i + 1] != 0.0 && (fs[i] < 0.0) != (fs[i + 1] < 0.0))
-            r[n++] = bracketed_root(p, xs[i], xs[i + 1], fs[i] < 0.0);
+        if (i + 1 < k && fs[i] != 0.0 && fs[i + 1] != 0.0 && (fs[i] < 0.0) != (fs[i + 1] < 0.0)) {
+            double lo = xs[i], hi = xs[i + 1];
+            bool between_critical_points = i > 0 && i + 2 < k;
+            double start = between_critical_points ? std::clamp(inflection, lo, hi)
+                                                   : bisection_point(lo, hi);
+            r[n++] = bracketed_root(p, lo, hi, fs[i] < 0.0, start);
+        }
     }
     return finish(r, n, roots, 3);
 }
