@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bezel/raster.hpp"
+#include "raster/render_flatten.hpp"
 
 namespace bezel {
 
@@ -82,6 +83,15 @@ Status Rasterizer::fill_path_impl(const Path& path, const Affine& transform, Fil
                                               : std::string("infinitely many")) +
                      " segments at tolerance " + std::to_string(options.tolerance_px) +
                      " px, more than kMaxEdges (" + std::to_string(kMaxEdges) + ")"};
+    flattened_.clear();
+    // WangUniform (the default) goes through the balanced flattener (render_flatten.hpp): same
+    // step count, vertices moved so each chord has zero mean area error. Anything it does not
+    // take (huge or non-finite points, a curve past the step cap) goes to flatten_checked, which
+    // names the problem.
+    if (options.method == FlattenMethod::WangUniform && options.tolerance_px > 0.0 &&
+        std::isfinite(options.tolerance_px) &&
+        raster_detail::flatten_balanced(path, transform, tol, flattened_))
+        return fill_impl(flattened_, rule, target, Vec2{});
     flattened_.clear();
     if (Status s = flatten_checked(path, transform, options, flattened_); !s)
         return Error{"fill_path: " + s.error().message};
