@@ -25,9 +25,15 @@
 // is ‖D‖·√3/36 (at t = 1/2 ± √3/6). Splitting the cubic into m equal parameter pieces divides D by
 // m³, so m = ⌈(√3·‖D‖ / (36·α·tol))^{1/3}⌉ quadratics are within α·tol of it, parametrically and
 // hence in Hausdorff distance; each quadratic is flattened within (1 − α)·tol, and the triangle
-// inequality for the Hausdorff distance gives tol. α = kCubicToQuadShare (chosen by measurement:
-// fewer quadratics, but each flattened more finely, trade off; see the bench). Polyline vertices
-// of a cubic lie on the quadratics, so within α·tol of the cubic, not on it.
+// inequality for the Hausdorff distance gives tol. α = kCubicToQuadShare: fewer quadratics, but
+// each flattened more finely, trade off; measured on Cantarell (cubic) at 512 px, α = 0.05, 0.1,
+// 0.2 give 181.6 k, 180.6 k, 185.0 k segments. Polyline vertices of a cubic lie on the quadratics,
+// so within α·tol of the cubic, not on it.
+//
+// Not done (yet): kurbo spreads one cubic's segments over all its quadratics by the summed
+// integral instead of rounding up per quadratic, which saves up to one segment per quadratic;
+// without it this method loses to WangUniform on cubic fonts (Cantarell 512 px: 180.6 k vs
+// 172.6 k). Pieces straddling two quadratics would need the hull check of both parts.
 #include <algorithm>
 #include <cmath>
 
