@@ -1,1 +1,69 @@
-int main() { return 0; }
+// bezel — the command-line face of the library: one subcommand per job (see commands.hpp).
+//
+// main() only parses and dispatches. It maps CLI11's outcomes onto bezel's exit codes: --help
+// and --version exit 0, every parse error exits 2 with CLI11's message and a hint to use --help.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+
+namespace {
+
+// The deepest subcommand the parser entered, for "Run 'bezel outline --help'" hints.
+std::string command_path(const CLI::App& app) {
+    std::string path = "bezel";
+    const CLI::App* at = &app;
+    for (;;) {
+        auto subs = at->get_subcommands();
+        if (subs.empty()) return path;
+        at = subs.front();
+        path += " " + at->get_name();
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace bezel::cli;
+    CLI::App app{
+        "bezel: a font and vector-outline engine.\n"
+        "Inspect glyph outlines point by point, as text, JSON or an annotated SVG."};
+    app.name("bezel");
+    app.set_version_flag("--version", version_string(), "Print the version and exit");
+    app.require_subcommand(1);
+    app.footer(
+        "Exit status: 0 success, 1 runtime error (unreadable font, bad glyph, unwritable "
+        "output), 2 usage error.\nRun 'bezel <command> --help' for a command's options.");
+    std::vector<Command> commands = add_all_commands(app);
+
+    // CLI11 would report a mistyped command only as "A subcommand is required"; name it instead.
+    if (argc > 1 && argv[1][0] != '-') {
+        std::string names;
+        bool known = false;
+        for (const Command& command : commands) {
+            known |= command.app->get_name() == argv[1];
+            names += (names.empty() ? "" : ", ") + command.app->get_name();
+        }
+        if (!known)
+            return fail_usage(std::string(argv[1]) + ": not a bezel command (commands: " + names + ")",
+                              "bezel");
+    }
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        return fail_usage(e.what(), command_path(app));
+    }
+
+    for (const Command& command : commands)
+        if (command.app->parsed()) return command.run();
+    // require_subcommand(1) makes this unreachable; stay defined anyway.
+    return fail_usage("no command given", "bezel");
+}

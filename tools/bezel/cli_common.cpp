@@ -1,0 +1,200 @@
+#include "cli_common.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+
+namespace bezel::cli {
+
+int fail_runtime(const std::string& message) {
+    std::cerr << "bezel: " << message << '\n';
+    return kExitRuntime;
+}
+
+int fail_usage(const std::string& message, const std::string& command) {
+    std::cerr << "bezel: " << message << '\n'
+              << "Run '" << command << " --help' for the list of options.\n";
+    return kExitUsage;
+}
+
+std::string version_string() { return std::string("bezel ") + BEZEL_VERSION; }
+
+Expected<std::u32string> decode_utf8(std::string_view text) {
+    std::u32string out;
+    std::size_t i = 0;
+    auto bad = [&](std::size_t at) {
+        return Error{"invalid UTF-8 at byte " + std::to_string(at)};
+    };
+    while (i < text.size()) {
+        auto b0 = static_cast<unsigned char>(text[i]);
+        // Sequence length from the lead byte; C0, C1 and F5..FF never start a valid sequence.
+        std::size_t n;
+        char32_t cp;
+        if (b0 < 0x80) { n = 1; cp = b0; }
+        else if (b0 >= 0xC2 && b0 <= 0xDF) { n = 2; cp = b0 & 0x1Fu; }
+        else if (b0 >= 0xE0 && b0 <= 0xEF) { n = 3; cp = b0 & 0x0Fu; }
+        else if (b0 >= 0xF0 && b0 <= 0xF4) { n = 4; cp = b0 & 0x07u; }
+        else return bad(i);
+        if (i + n > text.size()) return bad(i);
+        for (std::size_t k = 1; k < n; ++k) {
+            auto b = static_cast<unsigned char>(text[i + k]);
+            if ((b & 0xC0u) != 0x80u) return bad(i);
+            cp = (cp << 6) | (b & 0x3Fu);
+        }
+        // Overlong 3- and 4-byte forms, UTF-16 surrogates and values past Unicode's range.
+        if ((n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000) || (cp >= 0xD800 && cp <= 0xDFFF) ||
+            cp > 0x10FFFF)
+            return bad(i);
+        out.push_back(cp);
+        i += n;
+    }
+    return out;
+}
+
+void append_utf8(std::string& out, char32_t cp) {
+    if (cp < 0x80) {
+        out += static_cast<char>(cp);
+    } else if (cp < 0x800) {
+        out += static_cast<char>(0xC0 | (cp >> 6));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else if (cp < 0x10000) {
+        out += static_cast<char>(0xE0 | (cp >> 12));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else {
+        out += static_cast<char>(0xF0 | (cp >> 18));
+        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    }
+}
+
+Expected<char32_t> parse_code_point(std::string_view arg) {
+    const std::string quoted = "--char '" + std::string(arg) + "'";
+    if (arg.size() > 2 && (arg[0] == 'U' || arg[0] == 'u') && arg[1] == '+') {
+        std::string_view hex = arg.substr(2);
+        if (hex.size() > 6)
+            return Error{quoted + ": more than 6 hex digits"};
+        char32_t cp = 0;
+        for (char c : hex) {
+            if (!std::isxdigit(static_cast<unsigned char>(c)))
+                return Error{quoted + ": expected hex digits after U+"};
+            int digit = std::isdigit(static_cast<unsigned char>(c))
+                            ? c - '0'
+                            : std::tolower(static_cast<unsigned char>(c)) - 'a' + 10;
+            cp = cp * 16 + static_cast<char32_t>(digit);
+        }
+        if (cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))
+            return Error{quoted + ": not a Unicode scalar value"};
+        return cp;
+    }
+    auto decoded = decode_utf8(arg);
+    if (!decoded) return Error{quoted + ": " + decoded.error().message};
+    if (decoded->size() != 1)
+        return Error{quoted + ": expected one character or U+XXXX, got " +
+                     std::to_string(decoded->size()) + " characters"};
+    return (*decoded)[0];
+}
+
+std::string format_code_point(char32_t cp) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "U+%04X", static_cast<unsigned>(cp));
+    return buf;
+}
+
+const char* format_name(OutputFormat format) {
+    switch (format) {
+        case OutputFormat::Text: return "text";
+        case OutputFormat::Json: return "json";
+        case OutputFormat::Svg: return "svg";
+    }
+    return "text";
+}
+
+std::optional<OutputFormat> parse_format(std::string_view name) {
+    if (name == "text" || name == "txt") return OutputFormat::Text;
+    if (name == "json") return OutputFormat::Json;
+    if (name == "svg") return OutputFormat::Svg;
+    return std::nullopt;
+}
+
+Expected<OutputFormat> choose_format(const std::string& format_option,
+                                     const std::string& output_file, OutputFormat fallback) {
+    if (!format_option.empty()) {
+        if (auto f = parse_format(format_option)) return *f;
+        return Error{"-O '" + format_option + "': unknown output format (expected text, json or svg)"};
+    }
+    if (output_file.empty() || output_file == "-") return fallback;
+    std::string ext = std::filesystem::path(output_file).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == ".txt") return OutputFormat::Text;
+    if (ext == ".json") return OutputFormat::Json;
+    if (ext == ".svg") return OutputFormat::Svg;
+    return Error{output_file + ": cannot tell the output format from the extension '" + ext +
+                 "' (use .txt, .json or .svg, or give -O)"};
+}
+
+namespace {
+
+std::string errno_text(int err) { return std::strerror(err); }
+
+// Writes all of `data` to `fd`, retrying short writes and EINTR.
+bool write_all(int fd, std::string_view data) {
+    while (!data.empty()) {
+        ssize_t n = ::write(fd, data.data(), data.size());
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return false;
+        }
+        data.remove_prefix(static_cast<std::size_t>(n));
+    }
+    return true;
+}
+
+}  // namespace
+
+Status write_output(const std::string& output_file, std::string_view data) {
+    if (output_file.empty() || output_file == "-") {
+        std::cout.write(data.data(), static_cast<std::streamsize>(data.size()));
+        std::cout.flush();
+        if (!std::cout) return Error{"<stdout>: write failed"};
+        return ok_status();
+    }
+    if (std::filesystem::is_directory(output_file))
+        return Error{output_file + ": is a directory"};
+
+    // mkstemp creates the temporary beside the target, so rename() stays within one file system
+    // and is atomic: readers see either the old file or the complete new one.
+    std::string tmp = output_file + ".tmp-XXXXXX";
+    int fd = ::mkstemp(tmp.data());
+    if (fd < 0) return Error{output_file + ": cannot create file (" + errno_text(errno) + ")"};
+    // mkstemp makes the file 0600; give it the mode a plain open() would: 0666 minus the umask.
+    mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);
+
+    bool ok = write_all(fd, data);
+    int err = errno;
+    if (::close(fd) != 0 && ok) {
+        ok = false;
+        err = errno;
+    }
+    if (ok && ::rename(tmp.c_str(), output_file.c_str()) != 0) {
+        ok = false;
+        err = errno;
+    }
+    if (!ok) {
+        ::unlink(tmp.c_str());
+        return Error{output_file + ": cannot write file (" + errno_text(err) + ")"};
+    }
+    return ok_status();
+}
+
+}  // namespace bezel::cli

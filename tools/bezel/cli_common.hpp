@@ -1,0 +1,72 @@
+// tools/bezel/cli_common.hpp — what every bezel subcommand shares: exit codes, error lines,
+// argument parsing helpers, output formats and writing the result to stdout or a file.
+//
+// Conventions (the same for every subcommand):
+//   - exit 0 on success, 1 on a runtime failure (a font that does not open, a glyph id out of
+//     range, an unwritable output file), 2 on a usage error (unknown option, missing or
+//     conflicting options, malformed values);
+//   - an error is one line on stderr, `bezel: <input>: <what is wrong>`; usage errors add a
+//     second line pointing at --help;
+//   - output is produced completely in memory before anything is written, and `-o FILE` goes
+//     through a temporary file beside FILE that is renamed on success, so a failure never leaves
+//     a partial or truncated FILE behind.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "bezel/expected.hpp"
+
+namespace bezel::cli {
+
+enum ExitCode : int {
+    kExitOk = 0,
+    kExitRuntime = 1,  // the input was well formed but the work failed
+    kExitUsage = 2,    // the command line itself is wrong
+};
+
+// Prints `bezel: <message>` on stderr and returns kExitRuntime. `message` already names its input.
+int fail_runtime(const std::string& message);
+// Prints `bezel: <message>` and a hint to run `<command> --help`; returns kExitUsage.
+// `command` is e.g. "bezel outline".
+int fail_usage(const std::string& message, const std::string& command);
+
+// The line `bezel --version` prints: "bezel 0.1.0".
+std::string version_string();
+
+// Longest --text accepted, in code points: each one becomes a glyph with its own outline listing,
+// so this bounds the work and the output size of a single call.
+inline constexpr std::size_t kMaxTextCodePoints = 1000;
+
+// Decodes UTF-8 strictly (no overlong forms, no surrogates, nothing above U+10FFFF). The error
+// names the byte offset of the first bad sequence.
+Expected<std::u32string> decode_utf8(std::string_view text);
+void append_utf8(std::string& out, char32_t code_point);
+
+// Parses a --char argument: one UTF-8 encoded code point ("g", "é"), or "U+0067" / "u+67"
+// (1 to 6 hex digits). The error names the argument.
+Expected<char32_t> parse_code_point(std::string_view arg);
+// "U+0067" (at least four hex digits, upper case).
+std::string format_code_point(char32_t code_point);
+
+enum class OutputFormat { Text, Json, Svg };
+// "text", "json", "svg".
+const char* format_name(OutputFormat format);
+// The format named by `-O`, or nullopt for an unknown name.
+std::optional<OutputFormat> parse_format(std::string_view name);
+
+// Picks the output format: `-O` wins; otherwise the extension of `-o FILE` (.txt, .json, .svg,
+// case-insensitive); otherwise (stdout) `fallback`. An unknown or missing extension with no `-O`
+// is a usage error naming the file.
+Expected<OutputFormat> choose_format(const std::string& format_option,
+                                     const std::string& output_file, OutputFormat fallback);
+
+// Writes `data` to stdout when `output_file` is empty or "-", else atomically to `output_file`
+// (temporary file `<output_file>.tmp-XXXXXX` in the same directory, then rename). The error
+// names the file and the system's reason; no temporary file survives a failure.
+Status write_output(const std::string& output_file, std::string_view data);
+
+}  // namespace bezel::cli

@@ -1,0 +1,20 @@
+#include "commands.hpp"
+
+#include <CLI/CLI.hpp>
+
+namespace bezel::cli {
+
+Command add_outline_command(CLI::App& app);
+
+std::vector<Command> add_all_commands(CLI::App& app) {
+    using AddCommand = Command (*)(CLI::App&);
+    // The registry: one entry per subcommand file.
+    static constexpr AddCommand kCommands[] = {
+        add_outline_command,
+    };
+    std::vector<Command> commands;
+    for (AddCommand add : kCommands) commands.push_back(add(app));
+    return commands;
+}
+
+}  // namespace bezel::cli

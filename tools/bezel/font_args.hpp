@@ -1,0 +1,43 @@
+// tools/bezel/font_args.hpp — the font options every glyph-drawing subcommand takes, named after
+// HarfBuzz's hb-view where they overlap: FONT (positional, default: the bundled DejaVu Sans),
+// --face-index, --font-size, --variations, --hinting.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bezel/expected.hpp"
+#include "bezel/font.hpp"
+
+namespace CLI { class App; }
+
+namespace bezel::cli {
+
+// hb-view's default size: large enough that pixel coordinates keep the design's detail.
+inline constexpr double kDefaultFontSizePx = 256.0;
+
+struct FontArgs {
+    std::string file;            // set to BEZEL_DEFAULT_FONT by add_font_args
+    int face_index = 0;
+    double size_px = kDefaultFontSizePx;
+    std::string variations;      // "wght=700,wdth=80"
+    bool hinting = false;
+};
+
+// Registers FONT, --face-index, --font-size, --variations and --hinting on `cmd`, storing into
+// `args` (which must outlive parsing). Malformed values (a size that is not a number, a
+// variations string that does not parse) are usage errors reported by CLI11.
+void add_font_args(CLI::App& cmd, FontArgs& args);
+
+// Parses "wght=700,wdth=80" (also "wght=700 wdth=80"); tags are 1–4 characters, padded with
+// spaces as OpenType does. The error names the bad item.
+Expected<std::vector<VariationSetting>> parse_variations(const std::string& spec);
+
+// Opens args.file at args.face_index and applies args.variations. Errors name the file and, for
+// variations, the axis; a missing file or a directory is reported as such before FreeType sees it.
+Expected<Font> open_font(const FontArgs& args);
+
+// Checks args.size_px against (0, kMaxFontSizePx]; the error names --font-size and its value.
+Status check_font_size(const FontArgs& args);
+
+}  // namespace bezel::cli
