@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -26,6 +27,10 @@ namespace {
 
 const std::string kDejaVu = std::string(BEZEL_FONTS_DIR) + "/dejavu-sans/DejaVuSans.ttf";
 const std::string kCantarell = std::string(BEZEL_FONTS_DIR) + "/cantarell/Cantarell-Regular.otf";
+// Generated fonts, 1000 units/em, described in fonts-test/edge-cases/README.md.
+const std::string kEdge = std::string(BEZEL_FONTS_DIR) + "/edge-cases/EdgeCases.ttf";
+const std::string kEdgeVariable = std::string(BEZEL_FONTS_DIR) + "/edge-cases/EdgeCasesVariable.ttf";
+const std::string kEdgeCollection = std::string(BEZEL_FONTS_DIR) + "/edge-cases/EdgeCases.ttc";
 
 struct CliRun {
     int exit_code = -1;
@@ -319,6 +324,89 @@ TEST_F(Cli, TextRunSegmentsChainCloseAndFollowTrueTypeConventions) {
             EXPECT_GT(net_area, 0.0);
         }
     }
+}
+
+// 'I' of the variable font: gvar moves the right edge (points 2, 3) and the advance by +200 at
+// wght 900 and by −100 at wght 100.
+TEST_F(Cli, VariationsMoveTheRightEdgeOfVariableI) {
+    for (const auto& [setting, right_x, advance] : std::vector<std::tuple<std::string, double, double>>{
+             {"", 300, 400}, {"wght=900", 500, 600}, {"wght=100", 200, 300}, {"wght=400", 300, 400}}) {
+        SCOPED_TRACE(setting);
+        std::vector<std::string> args = {kEdgeVariable, "--char", "I", "--font-size", "1000"};
+        if (!setting.empty()) args.insert(args.end(), {"--variations", setting});
+        json j = outline_json(args);
+        ASSERT_FALSE(j.is_discarded());
+        const json& g = j["glyphs"][0];
+        EXPECT_EQ(g["advance"].get<double>(), advance);
+        EXPECT_EQ(g["contours"][0]["points"][2]["x"].get<double>(), right_x);
+        EXPECT_EQ(g["contours"][0]["points"][3]["x"].get<double>(), right_x);
+        EXPECT_EQ(g["contours"][0]["points"][0]["x"].get<double>(), 100.0);
+    }
+    expect_runtime_error(run({"outline", kEdgeVariable, "--char", "I", "--variations", "wght=2000"}),
+                         "wght");
+    expect_runtime_error(run({"outline", kEdgeVariable, "--char", "I", "--variations", "wdth=80"}),
+                         "wdth");
+}
+
+TEST_F(Cli, FaceIndexSelectsTheFaceOfACollection) {
+    json j0 = outline_json({kEdgeCollection, "--char", "A"});
+    json j1 = outline_json({kEdgeCollection, "--face-index", "1", "--char", "I"});
+    EXPECT_EQ(j0["font"]["family"], "Bezel Edge Cases");
+    EXPECT_EQ(j1["font"]["family"], "Bezel Variable");
+    EXPECT_EQ(j1["font"]["face_index"].get<int>(), 1);
+    expect_runtime_error(run({"outline", kEdgeCollection, "--face-index", "2", "--char", "I"}),
+                         "EdgeCases.ttc");
+}
+
+// 'A' is four off-curve points (100,100) (100,501) (501,501) (501,100): the contour starts at the
+// implied midpoint (300.5, 100) and runs clockwise.
+TEST_F(Cli, OffCurveOnlyContourRunsThroughImpliedMidpoints) {
+    json j = outline_json({kEdge, "--char", "A", "--font-size", "1000"});
+    ASSERT_FALSE(j.is_discarded());
+    const json& c = j["glyphs"][0]["contours"][0];
+    EXPECT_EQ(c["direction"], "clockwise");
+    for (const json& p : c["points"]) EXPECT_EQ(p["kind"], "off-conic");
+    ASSERT_EQ(c["segments"].size(), 4u);
+    EXPECT_EQ(c["segments"][0]["kind"], "quad");
+    EXPECT_EQ(c["segments"][0]["points"][0], json::array({300.5, -100.0}));
+    EXPECT_EQ(c["segments"][1]["points"][0], json::array({100.0, -300.5}));
+    // |area| of the polygon through the four controls: 401 × 401.
+    EXPECT_EQ(c["signed_area"].get<double>(), 401.0 * 401.0);
+}
+
+// '.' holds a single on-curve point, a triangle and a single off-curve point: the lone points
+// are reported as degenerate contours and draw no line segments.
+TEST_F(Cli, SinglePointContoursAreDegenerate) {
+    json j = outline_json({kEdge, "--char", ".", "--font-size", "1000"});
+    ASSERT_FALSE(j.is_discarded());
+    const json& cs = j["glyphs"][0]["contours"];
+    ASSERT_EQ(cs.size(), 3u);
+    EXPECT_EQ(cs[0]["direction"], "degenerate");
+    EXPECT_TRUE(cs[0]["segments"].empty());
+    EXPECT_EQ(cs[1]["direction"], "clockwise");
+    EXPECT_EQ(cs[1]["segments"].size(), 3u);
+    EXPECT_EQ(cs[2]["direction"], "degenerate");
+    EXPECT_EQ(cs[2]["points"][0]["kind"], "off-conic");
+    CliRun text = run({"outline", kEdge, "--char", ".", "--font-size", "1000"});
+    EXPECT_NE(text.out.find("contour 0: 1 point [0..0], degenerate (zero area)"), std::string::npos)
+        << text.out;
+    EXPECT_NE(text.out.find("segments: none"), std::string::npos);
+}
+
+TEST_F(Cli, EmptyGlyphHasNoContoursInEveryFormat) {
+    json j = outline_json({kEdge, "--char", " ", "--font-size", "1000"});
+    ASSERT_FALSE(j.is_discarded());
+    const json& g = j["glyphs"][0];
+    EXPECT_EQ(g["name"], "space");
+    EXPECT_EQ(g["advance"].get<double>(), 300.0);
+    EXPECT_TRUE(g["bounds"].is_null());
+    EXPECT_TRUE(g["contours"].empty());
+    CliRun text = run({"outline", kEdge, "--char", " "});
+    EXPECT_EQ(text.exit_code, 0);
+    EXPECT_NE(text.out.find("bounds (empty)  0 contours, 0 points"), std::string::npos) << text.out;
+    CliRun svg = run({"outline", kEdge, "--char", " ", "-O", "svg"});
+    EXPECT_EQ(svg.exit_code, 0);
+    EXPECT_EQ(svg.out.substr(svg.out.size() - 7), "</svg>\n");
 }
 
 TEST_F(Cli, SvgOutputIsADocumentWithOutlinePointsAndContourMarks) {

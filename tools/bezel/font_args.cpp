@@ -28,7 +28,7 @@ void add_font_args(CLI::App& cmd, FontArgs& args) {
                 auto parsed = parse_variations(value);
                 return parsed ? std::string() : parsed.error().message;
             },
-            "LIST", "variations"));
+            "", "variations"));  // empty description: help shows "LIST", not "LIST:LIST"
     cmd.add_flag("--hinting", args.hinting,
                  "Hint the outlines (TrueType bytecode or FreeType's hinter) instead of exact "
                  "scaling");
@@ -81,7 +81,11 @@ Expected<Font> open_font(const FontArgs& args) {
         auto settings = parse_variations(args.variations);
         if (!settings) return settings.error();
         auto set = font->set_variations(*settings);
-        if (!set) return Error{args.file + ": " + set.error().message};
+        if (!set) {
+            // The header promises the axis in the message, not the file; add the file if absent.
+            const std::string& m = set.error().message;
+            return m.find(args.file) == std::string::npos ? Error{args.file + ": " + m} : set.error();
+        }
     }
     return font;
 }

@@ -138,7 +138,7 @@ Command add_outline_command(CLI::App& app) {
                 auto cp = parse_code_point(value);
                 return cp ? std::string() : cp.error().message;
             },
-            "C", "char"));
+            "", "char"));
     args->gid_option = which->add_option("--gid", args->gid, "A glyph id")->type_name("N");
     args->text_option =
         which->add_option("--text", args->text,
