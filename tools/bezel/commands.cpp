@@ -5,12 +5,16 @@
 namespace bezel::cli {
 
 Command add_outline_command(CLI::App& app);
+Command add_smooth_command(CLI::App& app);
+Command add_continuity_command(CLI::App& app);
 
 std::vector<Command> add_all_commands(CLI::App& app) {
     using AddCommand = Command (*)(CLI::App&);
     // The registry: one entry per subcommand file.
     static constexpr AddCommand kCommands[] = {
         add_outline_command,
+        add_smooth_command,
+        add_continuity_command,
     };
     std::vector<Command> commands;
     for (AddCommand add : kCommands) commands.push_back(add(app));
