@@ -256,14 +256,15 @@ private:
                  << f(base.x + side.x) << ',' << f(base.y + side.y) << ' ' << f(base.x - side.x)
                  << ',' << f(base.y - side.y) << "\" fill=\"" << kStartColor << "\"/>\n";
         }
-        // Label on the side away from the arrow.
+        // Label beside the ring, clear of the arrow and of the point's own index (drawn to its
+        // upper right): left of a vertical arrow, below a horizontal one.
         const char* turn = c.direction == Direction::Clockwise          ? " \u21bb"
                            : c.direction == Direction::CounterClockwise ? " \u21ba"
                                                                         : "";
-        Vec2 away = dir == Vec2{} ? Vec2{-1, 0} : -dir;
-        Point at = s + away * (14 * u_) + Vec2{0, 4 * u_};
-        text(at, "c" + std::to_string(index) + turn, kStartColor, 11,
-             away.x < 0 ? "end" : "start", "bold");
+        const bool vertical = std::abs(dir.y) >= std::abs(dir.x);
+        Point at = vertical ? s + Vec2{-12 * u_, 4 * u_} : s + Vec2{0, 22 * u_};
+        text(at, "c" + std::to_string(index) + turn, kStartColor, 11, vertical ? "end" : "middle",
+             "bold");
     }
 
     // `index` < 0: no index label (the legend's samples).
