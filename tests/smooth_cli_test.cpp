@@ -14,14 +14,13 @@
 
 namespace {
 
-// The CLI: BEZEL_CLI_PATH when the build defines it (cli*_test files), else the build tree's
-// tools/bezel/bezel next to this test's own tests/ directory.
+// The CLI binary (tests/CMakeLists.txt defines BEZEL_CLI_PATH for *_cli_test files when the
+// tools are built, and builds the CLI first).
 std::string cli_path() {
 #ifdef BEZEL_CLI_PATH
     return BEZEL_CLI_PATH;
 #else
-    std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe");
-    return (self.parent_path().parent_path() / "tools" / "bezel" / "bezel").string();
+    return "";
 #endif
 }
 
@@ -55,7 +54,8 @@ CliRun run(const std::string& args) {
 class SmoothCli : public ::testing::Test {
 protected:
     void SetUp() override {
-        ASSERT_TRUE(std::filesystem::exists(cli_path())) << "build bezel_cli first: " << cli_path();
+        if (cli_path().empty()) GTEST_SKIP() << "the CLI is not built (BEZEL_BUILD_TOOLS=OFF)";
+        ASSERT_TRUE(std::filesystem::exists(cli_path())) << cli_path();
     }
 };
 
