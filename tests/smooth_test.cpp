@@ -144,6 +144,7 @@ TEST(Chaikin, PointCountsFollowTheDoublingRule) {
             EXPECT_EQ(b->size(), kept) << "n=" << n << " k=" << k;
             EXPECT_EQ(b->size(), n << k);
             EXPECT_EQ(c->size(), cut) << "n=" << n << " k=" << k;
+            EXPECT_EQ(c->size(), ((n - 2) << k) + 2);
             EXPECT_EQ(b->front(), p.front());
             EXPECT_EQ(b->back(), p.back());
         }
@@ -682,8 +683,10 @@ TEST(SmoothErrors, OptionsOutOfRange) {
     std::vector<Point> p{{0, 0}, {1, 1}, {2, 0}};
     expect_error(chaikin(p, -1), "chaikin: iterations -1 out of range 0..24");
     expect_error(chaikin(p, kMaxChaikinIterations + 1), "out of range");
-    expect_error(chaikin(p, 22), "would give more than 4194304 points");
-    EXPECT_TRUE(chaikin(p, 20).ok());  // 3·2^20 / … = 2^21 + 2 points: under the wall
+    expect_error(chaikin(p, 21), "would give more than 4194304 points");  // 3·2^21 ≈ 6.3 Mi
+    auto at_wall = chaikin(p, 20);  // 3·2^20 ≈ 3.1 Mi points: under the wall
+    ASSERT_TRUE(at_wall.ok());
+    EXPECT_EQ(at_wall->size(), std::size_t{3} << 20);
     expect_error(catmull_rom(p, {false, -0.1}), "catmull-rom: alpha -0.1");
     expect_error(catmull_rom(p, {false, 1.5}), "out of range [0, 1]");
     expect_error(catmull_rom(p, {false, 0.5, kNaN}), "tension");

@@ -43,12 +43,12 @@ inline constexpr std::size_t kMaxSmoothPoints = std::size_t{1} << 20;
 // finite; a result that would still overflow (e.g. chord-length spans in a ratio of 1e300) is an
 // error, never a non-finite path.
 inline constexpr double kMaxSmoothCoordinate = 0x1p100;
-// Most Chaikin iterations. Each iteration doubles the point count, so beyond ~22 iterations even
-// a triangle exceeds kMaxChaikinOutputPoints; after 8 the polygon is within 4⁻⁸ ≈ 1.5e-5 of the
-// limit curve relative to its second differences — use chaikin_limit() for the exact curve.
+// Most Chaikin iterations. Each iteration doubles the point count, so from 21 iterations on even
+// a triangle exceeds kMaxChaikinOutputPoints; after 8 the polygon's distance to the limit curve
+// is already 4⁻⁸ ≈ 1.5e-5 of what it was — use chaikin_limit() for the exact curve.
 inline constexpr int kMaxChaikinIterations = 24;
-// Most points chaikin() may produce (checked before any work: n·2^k for closed input,
-// (n−1)·2^k + 2 for open input with end points kept). 4 Mi points = 64 MiB.
+// Most points chaikin() may produce, checked before any work: after k rounds n points become
+// n·2^k (closed, or open with kept ends) or (n−2)·2^k + 2 (open, ends cut). 4 Mi points = 64 MiB.
 inline constexpr std::size_t kMaxChaikinOutputPoints = std::size_t{1} << 22;
 
 // ---- Chaikin corner cutting ------------------------------------------------------------------
