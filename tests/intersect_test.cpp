@@ -157,6 +157,58 @@ TEST(Intersect, SelfIntersectionWithDoublePointAtStart) {
     EXPECT_EQ(m.points[0].t_b, 1.0);
 }
 
+// ---- Tangents and near-tangents --------------------------------------------------------------
+
+TEST(IntersectTangent, DifferentCurvaturesGiveOneTangentToFullPrecision) {
+    // y = x² and y = 2x² (x = 2t − 1 on both): they touch at the origin, t = ½, and nowhere else.
+    QuadBez a{{-1, 1}, {0, -1}, {1, 1}};
+    QuadBez b{{-1, 2}, {0, -2}, {1, 2}};
+    auto r = must(intersect(a, b));
+    ASSERT_EQ(r.points.size(), 1u);
+    EXPECT_EQ(r.points[0].kind, IntersectionKind::Tangent);
+    // A simple root of the tangency equations: good to rounding, not just √ε.
+    EXPECT_NEAR(r.points[0].t_a, 0.5, 1e-12);
+    EXPECT_NEAR(r.points[0].t_b, 0.5, 1e-12);
+}
+
+TEST(IntersectTangent, NearTangentCrossingPairsAreBothFound) {
+    // y = x² against y = 2x² − δ: crossings at x = ±√δ, i.e. t = (1 ± √δ)/2.
+    QuadBez a{{-1, 1}, {0, -1}, {1, 1}};
+    for (double delta : {1e-4, 1e-8, 1e-12}) {
+        QuadBez b{{-1, 2 - delta}, {0, -2 - delta}, {1, 2 - delta}};
+        auto r = must(intersect(a, b));
+        ASSERT_EQ(r.points.size(), 2u) << "delta " << delta;
+        double x = std::sqrt(delta);
+        for (int i = 0; i < 2; ++i) {
+            double expected_t = (1.0 + (i == 0 ? -x : x)) / 2.0;
+            // The crossing angle is ~2√δ, so the attainable accuracy is ~ε/√δ.
+            EXPECT_NEAR(r.points[i].t_a, expected_t, 1e-15 / x + 1e-15) << "delta " << delta;
+            EXPECT_NEAR(r.points[i].t_b, expected_t, 1e-15 / x + 1e-15) << "delta " << delta;
+        }
+    }
+    // Below the resolution limit (crossings 1e-8 apart in t) they are one tangent contact.
+    QuadBez b{{-1, 2 - 1e-16}, {0, -2 - 1e-16}, {1, 2 - 1e-16}};
+    auto r = must(intersect(a, b));
+    ASSERT_EQ(r.points.size(), 1u);
+    EXPECT_EQ(r.points[0].kind, IntersectionKind::Tangent);
+    EXPECT_NEAR(r.points[0].t_a, 0.5, 1e-7);
+}
+
+TEST(IntersectTangent, NearMissBeyondToleranceIsNothing) {
+    QuadBez a{{-1, 1}, {0, -1}, {1, 1}};
+    QuadBez b{{-1, 2 + 1e-9}, {0, -2 + 1e-9}, {1, 2 + 1e-9}};  // 1e-9 above a's apex
+    EXPECT_TRUE(must(intersect(a, b)).points.empty());
+}
+
+TEST(IntersectTangent, LineThroughACuspIsOnePoint) {
+    // (0,0) (1,1) (0,1) (1,0) has its cusp at t = ½, (0.5, 0.75); x(t) − ½ = 4(t − ½)³.
+    CubicBez c = cubic(0, 0, 1, 1, 0, 1, 1, 0);
+    auto r = must(intersect(Line{{0.5, 0}, {0.5, 1}}, c));
+    ASSERT_EQ(r.points.size(), 1u);
+    EXPECT_NEAR(r.points[0].t_b, 0.5, 1e-5);  // a triple root: ∛ε
+    EXPECT_NEAR(r.points[0].point.y, 0.75, 1e-9);
+}
+
 // ---- Self-intersection --------------------------------------------------------------------------
 
 TEST(SelfIntersect, SymmetricLoopHasParametersSummingToOne) {
@@ -436,6 +488,60 @@ TEST(IntersectProperty, LinesAndQuadsAgreeWithTheBaseline) {
         ASSERT_EQ(r.points.size(), base->size()) << "pair " << iter;
         for (std::size_t i = 0; i < base->size(); ++i)
             EXPECT_NEAR(r.points[i].t_a, (*base)[i].t_a, 1e-6) << "pair " << iter;
+    }
+}
+
+// Small-integer control points make every degeneracy common: shared and collinear control
+// points, shared endpoints, collinear and overlapping curves, curves through each other's
+// vertices. Whatever comes back must be consistent: points on both curves, no two results for
+// one point, overlaps well formed and their ends on both curves.
+TEST(IntersectProperty, DegenerateIntegerInputIsConsistent) {
+    std::mt19937_64 rng(17);
+    auto ip = [&] { return Point(static_cast<double>(rng() % 4), static_cast<double>(rng() % 4)); };
+    auto curve = [&] {
+        Curve c;
+        c.degree = 1 + static_cast<int>(rng() % 3);
+        for (int i = 0; i <= c.degree; ++i) c.p[i] = ip();
+        return c;
+    };
+    for (int iter = 0; iter < 20000; ++iter) {
+        Curve a = curve(), b = curve();
+        auto r = intersect(a, b);
+        ASSERT_TRUE(r.ok()) << r.error().message;
+        for (std::size_t i = 0; i < r->points.size(); ++i) {
+            const auto& p = r->points[i];
+            ASSERT_TRUE(p.t_a >= 0 && p.t_a <= 1 && p.t_b >= 0 && p.t_b <= 1) << "pair " << iter;
+            EXPECT_LE(distance(a.eval(p.t_a), b.eval(p.t_b)), 1e-9) << "pair " << iter;
+            for (std::size_t j = 0; j < i; ++j)
+                EXPECT_FALSE(std::fabs(p.t_a - r->points[j].t_a) <= 1e-9 &&
+                             std::fabs(p.t_b - r->points[j].t_b) <= 1e-9)
+                    << "duplicate, pair " << iter;
+        }
+        for (const auto& o : r->overlaps) {
+            EXPECT_LT(o.t_a0, o.t_a1) << "pair " << iter;
+            EXPECT_LE(distance(a.eval(o.t_a0), b.eval(o.t_b0)), 1e-9) << "pair " << iter;
+            EXPECT_LE(distance(a.eval(o.t_a1), b.eval(o.t_b1)), 1e-9) << "pair " << iter;
+            // The middle of A's stretch lies on B's stretch (B's parametrisation may differ from
+            // A's when both are straight, so search: dense samples, then golden section).
+            Point mid = a.eval(0.5 * (o.t_a0 + o.t_a1));
+            double lo = std::min(o.t_b0, o.t_b1), hi = std::max(o.t_b0, o.t_b1), best_t = lo;
+            for (int k = 0; k <= 256; ++k) {
+                double t = lo + (hi - lo) * k / 256;
+                if (distance(b.eval(t), mid) < distance(b.eval(best_t), mid)) best_t = t;
+            }
+            double x0 = std::max(lo, best_t - (hi - lo) / 256), x1 = std::min(hi, best_t + (hi - lo) / 256);
+            for (int k = 0; k < 100; ++k) {
+                double m0 = x0 + (x1 - x0) * 0.382, m1 = x0 + (x1 - x0) * 0.618;
+                if (distance(b.eval(m0), mid) < distance(b.eval(m1), mid))
+                    x1 = m1;
+                else
+                    x0 = m0;
+            }
+            EXPECT_LE(distance(b.eval(0.5 * (x0 + x1)), mid), 1e-9) << "pair " << iter;
+        }
+        auto self = self_intersect(a);
+        ASSERT_TRUE(self.ok());
+        for (const auto& p : self->points) EXPECT_LE(distance(a.eval(p.t_a), a.eval(p.t_b)), 1e-9);
     }
 }
 

@@ -69,13 +69,15 @@ double invert(const Scalar& f, const Mono& m, double x) {
     bool up = m.x1 > m.x0;
     if (up ? x <= m.x0 : x >= m.x0) return m.t0;
     if (up ? x >= m.x1 : x <= m.x1) return m.t1;
+    if (f.n == 1) return (x - f.x[0]) / (f.x[1] - f.x[0]);  // a line: x(t) is linear
     double a = m.t0, b = m.t1;
     for (int i = 0; i < 80; ++i) {
         double c = 0.5 * (a + b);
         if (c <= a || c >= b) break;
         ((f.eval(c) < x) == up ? a : b) = c;
     }
-    return 0.5 * (a + b);
+    // The bracket is down to adjacent doubles: keep the one whose value is closer.
+    return std::fabs(f.eval(a) - x) < std::fabs(f.eval(b) - x) ? a : b;
 }
 
 // Finds the line through the two farthest control points of a and b (whichever pair).

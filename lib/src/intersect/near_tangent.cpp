@@ -129,7 +129,14 @@ struct Scan {
             if (k + 1 < n && !s[k + 1].clamped && s[k + 1].g != 0.0 &&
                 (s[k].g < 0.0) != (s[k + 1].g < 0.0))
                 crossing(s[k], s[k + 1], raw);
-            // Local minimum of |g| (plateaus count once, at their first sample).
+            // Local minimum of |g| (plateaus count once, at their first sample). Next to a sign
+            // change it is the crossing's own dip (or, between two close crossings, the gap
+            // between them): crossing() has it, so it is not a contact.
+            auto flips = [&](int i, int j) {
+                return i >= 0 && j < n && (s[i].g < 0.0) != (s[j].g < 0.0) && s[i].g != 0.0 &&
+                       s[j].g != 0.0;
+            };
+            if (flips(k - 1, k) || flips(k, k + 1)) continue;
             double here = std::fabs(s[k].g);
             bool left_higher = k == 0 || std::fabs(s[k - 1].g) > here;
             bool right_higher = k + 1 == n || std::fabs(s[k + 1].g) >= here;
