@@ -5,6 +5,7 @@
 namespace bezel::cli {
 
 Command add_outline_command(CLI::App& app);
+Command add_intersect_command(CLI::App& app);
 Command add_smooth_command(CLI::App& app);
 Command add_continuity_command(CLI::App& app);
 
@@ -13,6 +14,7 @@ std::vector<Command> add_all_commands(CLI::App& app) {
     // The registry: one entry per subcommand file.
     static constexpr AddCommand kCommands[] = {
         add_outline_command,
+        add_intersect_command,
         add_smooth_command,
         add_continuity_command,
     };
