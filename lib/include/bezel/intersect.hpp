@@ -61,9 +61,10 @@ inline constexpr double kTangentMergeParam = 1e-7;
 // Deepest subdivision: parameter width 2⁻ᵏ. Pairs that still cannot be separated or isolated at
 // 2⁻²⁰ (≈ 1e-6) are near-tangent and go to the tangent resolver instead of splitting further.
 inline constexpr int kIntersectLeafDepth = 20;
-// Most sub-curve pairs one segment pair may examine. Random cubic pairs need under 100; curves
-// that run within the touch tolerance of each other for a long stretch without being an
-// overlap need the most. Exceeding it is an Error, not a hang.
+// Most sub-curve pairs one segment pair may examine. Random cubic pairs need 4 on average and
+// 34 at most (20000 pairs measured); curves that run within the touch tolerance of each other
+// for a long stretch without being an overlap need the most. Exceeding it is an Error, not a
+// hang (the wall is met within tens of milliseconds).
 inline constexpr std::size_t kMaxIntersectWork = std::size_t{1} << 18;
 // Most results intersect_paths / self_intersect_path return before giving up with an Error.
 inline constexpr std::size_t kMaxPathIntersections = std::size_t{1} << 20;
