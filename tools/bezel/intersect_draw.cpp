@@ -4,19 +4,14 @@
 // Geometry stays in the paths' own units (y down). Stroke widths and ring sizes are measured in
 // `u`, one display pixel: the picture is kDisplayPx display pixels on its longer side, so it
 // looks the same whatever the paths' scale.
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 
 #include "bezel/flatten.hpp"
-#include "bezel/image.hpp"
+#include "draw.hpp"
 #include "bezel/raster.hpp"
 #include "intersect_output.hpp"
 
@@ -36,12 +31,6 @@ const char* kind_color(IntersectionKind k) {
         case IntersectionKind::Endpoint: return "#2e7d32";
     }
     return "#000000";
-}
-
-std::string f(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
 }
 
 // The drawing area: both paths' bounds with a margin; a unit box when there is nothing.
@@ -82,20 +71,6 @@ Path piece_path(const Path& path, std::size_t seg, double t0, double t1) {
 
 // ---- PNG: strokes as polygons for the fill rasterizer -------------------------------------------
 
-// Each polyline edge becomes a rectangle of half-width hw, extended by hw past both ends (square
-// caps, which also fill the joints). All rectangles wind the same way, so NonZero unions them.
-void stroke_polyline(const std::vector<Point>& pts, double hw, Polylines& out) {
-    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-        Vec2 d = pts[i + 1] - pts[i];
-        double len = d.length();
-        if (!(len > 0.0)) continue;
-        Vec2 u = d / len * hw, n = u.perp();
-        Point p = pts[i] - u, q = pts[i + 1] + u;
-        for (Point v : {p + n, q + n, q - n, p - n}) out.points.push_back(v);
-        out.contour_ends.push_back(out.points.size());
-    }
-}
-
 // Every segment of `path` (mapped by m to pixels), stroked.
 void stroke_path(const Path& path, const Affine& m, double hw, Polylines& out) {
     Polylines flat;
@@ -128,13 +103,6 @@ void ring(Point c, double r_out, double r_in, Polylines& out) {
     out.contour_ends.push_back(out.points.size());
 }
 
-Expected<Mask> fill(Rasterizer& raster, const Polylines& lines, int w, int h) {
-    Mask m(w, h);
-    auto st = raster.fill(lines, FillRule::NonZero, m.view());
-    if (!st) return st.error();
-    return m;
-}
-
 }  // namespace
 
 std::string format_intersect_svg(const IntersectReport& r) {
@@ -143,28 +111,28 @@ std::string format_intersect_svg(const IntersectReport& r) {
     double u = size / kDisplayPx;
     double wpx = kDisplayPx * box.width() / size, hpx = kDisplayPx * box.height() / size;
     std::ostringstream s;
-    s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << f(wpx) << "\" height=\"" << f(hpx)
-      << "\" viewBox=\"" << f(box.x0) << ' ' << f(box.y0) << ' ' << f(box.width()) << ' '
-      << f(box.height()) << "\">\n";
+    s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << svg_number(wpx) << "\" height=\"" << svg_number(hpx)
+      << "\" viewBox=\"" << svg_number(box.x0) << ' ' << svg_number(box.y0) << ' ' << svg_number(box.width()) << ' '
+      << svg_number(box.height()) << "\">\n";
     s << "<title>bezel intersect: " << r.result.intersections.size() << " intersections, "
       << r.result.overlaps.size() << " overlaps</title>\n";
-    s << "<rect x=\"" << f(box.x0) << "\" y=\"" << f(box.y0) << "\" width=\"" << f(box.width())
-      << "\" height=\"" << f(box.height()) << "\" fill=\"white\"/>\n";
+    s << "<rect x=\"" << svg_number(box.x0) << "\" y=\"" << svg_number(box.y0) << "\" width=\"" << svg_number(box.width())
+      << "\" height=\"" << svg_number(box.height()) << "\" fill=\"white\"/>\n";
     const Path& b = r.self ? r.a : r.b;
     for (const PathOverlap& o : r.result.overlaps) {
         double lo = std::min(o.t_a0, o.t_a1), hi = std::max(o.t_a0, o.t_a1);
         s << "<path d=\"" << to_svg_path(piece_path(r.a, o.seg_a, lo, hi)) << "\" fill=\"none\" stroke=\""
-          << kColorOverlap << "\" stroke-opacity=\"0.6\" stroke-width=\"" << f(8 * u)
+          << kColorOverlap << "\" stroke-opacity=\"0.6\" stroke-width=\"" << svg_number(8 * u)
           << "\" stroke-linecap=\"round\"/>\n";
     }
     s << "<path d=\"" << to_svg_path(r.a) << "\" fill=\"none\" stroke=\"" << kColorA
-      << "\" stroke-width=\"" << f(1.5 * u) << "\"/>\n";
+      << "\" stroke-width=\"" << svg_number(1.5 * u) << "\"/>\n";
     if (!r.self)
         s << "<path d=\"" << to_svg_path(b) << "\" fill=\"none\" stroke=\"" << kColorB
-          << "\" stroke-width=\"" << f(1.5 * u) << "\"/>\n";
+          << "\" stroke-width=\"" << svg_number(1.5 * u) << "\"/>\n";
     for (const PathIntersection& p : r.result.intersections)
-        s << "<circle cx=\"" << f(p.point.x) << "\" cy=\"" << f(p.point.y) << "\" r=\"" << f(5 * u)
-          << "\" fill=\"none\" stroke=\"" << kind_color(p.kind) << "\" stroke-width=\"" << f(1.5 * u)
+        s << "<circle cx=\"" << svg_number(p.point.x) << "\" cy=\"" << svg_number(p.point.y) << "\" r=\"" << svg_number(5 * u)
+          << "\" fill=\"none\" stroke=\"" << kind_color(p.kind) << "\" stroke-width=\"" << svg_number(1.5 * u)
           << "\"><title>" << intersection_kind_name(p.kind) << ": A seg " << p.seg_a << " t=" << p.t_a
           << ", " << (r.self ? "A" : "B") << " seg " << p.seg_b << " t=" << p.t_b
           << "</title></circle>\n";
@@ -180,7 +148,6 @@ Expected<std::string> format_intersect_png(const IntersectReport& r) {
     int h = std::max(1, static_cast<int>(std::ceil(box.height() * scale)));
     Affine m = Affine::scale(scale) * Affine::translate({-box.x0, -box.y0});
 
-    Rasterizer raster;
     Polylines la, lb, lo, lm;
     stroke_path(r.a, m, 0.75, la);
     if (!r.self) stroke_path(r.b, m, 0.75, lb);
@@ -188,34 +155,8 @@ Expected<std::string> format_intersect_png(const IntersectReport& r) {
         stroke_path(piece_path(r.a, o.seg_a, std::min(o.t_a0, o.t_a1), std::max(o.t_a0, o.t_a1)), m,
                     4.0, lo);
     for (const PathIntersection& p : r.result.intersections) ring(m * p.point, 5.0, 3.5, lm);
-    auto ma = fill(raster, la, w, h), mb = fill(raster, lb, w, h), mo = fill(raster, lo, w, h),
-         mm = fill(raster, lm, w, h);
-    for (auto* x : {&ma, &mb, &mo, &mm})
-        if (!*x) return x->error();
-
     // Ink: A black, B mid-gray, overlap bands light gray, rings black; white paper.
-    Mask out(w, h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            double ink = std::max({ma->at(x, y) / 255.0, 0.55 * mb->at(x, y) / 255.0,
-                                   0.3 * mo->at(x, y) / 255.0, mm->at(x, y) / 255.0});
-            out.at(x, y) = static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - ink)));
-        }
-
-    // write_png_gray writes files: go through a private temporary one, return its bytes.
-    std::string tmpl = (std::filesystem::temp_directory_path() / "bezel-intersect-XXXXXX.png").string();
-    int fd = ::mkstemps(tmpl.data(), 4);
-    if (fd < 0) return Error{"cannot create a temporary file for the PNG"};
-    ::close(fd);
-    auto st = write_png_gray(tmpl, out.view());
-    std::string bytes;
-    if (st) {
-        std::ifstream in(tmpl, std::ios::binary);
-        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
-    std::filesystem::remove(tmpl);
-    if (!st) return st.error();
-    return bytes;
+    return ink_png({{&la, 1.0}, {&lb, 0.55}, {&lo, 0.3}, {&lm, 1.0}}, w, h);
 }
 
 }  // namespace bezel::cli

@@ -1,0 +1,32 @@
+// tools/bezel/draw.hpp — the drawing pieces the CLI's pictures share (smooth, intersect): SVG
+// numbers, strokes as fillable polygons, and layered gray PNGs through bezel's own rasterizer.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bezel/expected.hpp"
+#include "bezel/flatten.hpp"
+
+namespace bezel::cli {
+
+// A number for SVG attributes and path data: 6 significant digits ("%.6g").
+std::string svg_number(double v);
+
+// Each polyline edge becomes a rectangle of half-width hw, extended by hw past both ends (square
+// caps, which also fill the joints). All rectangles wind the same way, so NonZero unions them.
+void stroke_polyline(const std::vector<Point>& pts, double hw, Polylines& out);
+
+// One layer of a picture: its shapes (filled NonZero) and how dark full coverage inks (0..1).
+struct InkLayer {
+    const Polylines* shapes;
+    double ink;
+};
+
+// Fills every layer into a w×h mask, inks each pixel with the darkest layer (max of ink ×
+// coverage) on white paper, and returns the PNG file's bytes. Errors come from the rasterizer
+// or from writing the PNG.
+Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h);
+
+}  // namespace bezel::cli
