@@ -17,6 +17,7 @@
 
 #include "bezel/expected.hpp"
 #include "bezel/geometry.hpp"
+#include "bezel/image.hpp"
 #include "bezel/path.hpp"
 
 namespace bezel {
@@ -146,6 +147,15 @@ public:
     // Errors name the file and the glyph id: size out of range, gid ≥ glyph_count(), a glyph
     // FreeType cannot load (its reason), a bitmap-only font.
     Expected<GlyphOutline> outline(GlyphId gid, const OutlineOptions& options);
+
+    // FreeType's own anti-aliased rasterizer (FT_Outline_Render with FT_RASTER_FLAG_AA, the
+    // "smooth" renderer) on the unhinted outline of `gid` at options.size_px, written into
+    // `target` with the pen at `origin` (pixels, y down; every target pixel is written). For
+    // comparisons and benchmarks against bezel's rasterizer (`bezel bench`); FreeType rounds the
+    // outline to its 1/64 px grid and flattens curves itself. Errors as outline(), plus a
+    // target larger than kMaxBitmapDim-style limits of FreeType (32767 px).
+    Status render_with_freetype(GlyphId gid, const OutlineOptions& options,
+                                const MaskView& target, Vec2 origin);
 
 private:
     struct Impl;

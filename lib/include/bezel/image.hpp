@@ -6,12 +6,19 @@
 // (bytes for MaskView, floats for FloatMaskView). It may exceed the width (a sub-rectangle of a
 // glyph atlas) and may be negative (bottom-up memory). Views never own or free their memory.
 //
-// Only this module sees libpng. RGB(A) images and compositing are not here yet.
+// Colour images: `Image` holds straight (non-premultiplied) sRGB-encoded RGBA8. Coverage masks
+// are LINEAR (area fractions); blending converts colours to linear light (the sRGB transfer
+// function, IEC 61966-2-1), mixes there, and encodes back, so anti-aliased edges keep their
+// weight on any background. The formula and tables are at the implementation.
+//
+// Only this module sees libpng.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bezel/expected.hpp"
@@ -103,5 +110,68 @@ Status write_png_gray(const std::string& file, ConstMaskView mask);
 // gray with libpng's default weights; an alpha channel is dropped (a mask file is its gray
 // values). Errors name the file: unreadable, not a PNG, corrupt, or larger than kMaxImageDim.
 Expected<Mask> read_png_gray(const std::string& file);
+
+// --- Colour images ------------------------------------------------------------------------------
+// An sRGB-encoded colour with straight alpha.
+struct Rgba8 {
+    std::uint8_t r = 0, g = 0, b = 0, a = 255;
+    bool operator==(const Rgba8& o) const { return r == o.r && g == o.g && b == o.b && a == o.a; }
+    bool operator!=(const Rgba8& o) const { return !(*this == o); }
+};
+
+// Parses a colour as hb-view does: "#RRGGBB", "#RRGGBBAA", "RRGGBB", "RRGGBBAA", "#RGB", "#RGBA"
+// (hex, case-insensitive), plus a few CSS names ("black", "white", "red", "green", "blue",
+// "transparent"). The error names the text.
+Expected<Rgba8> parse_color(std::string_view text);
+
+// An owning RGBA8 image, rows packed. A value type.
+class Image {
+public:
+    Image() = default;
+    // Filled with `fill`. Precondition: 0 ≤ width, height ≤ kMaxImageDim.
+    Image(int width, int height, Rgba8 fill = {0, 0, 0, 0});
+    int width() const { return width_; }
+    int height() const { return height_; }
+    Rgba8& at(int x, int y) { return pixels_[index(x, y)]; }
+    const Rgba8& at(int x, int y) const { return pixels_[index(x, y)]; }
+    Rgba8* row(int y) { return pixels_.data() + index(0, y); }
+    const Rgba8* row(int y) const { return pixels_.data() + index(0, y); }
+    bool operator==(const Image& o) const;
+    bool operator!=(const Image& o) const { return !(*this == o); }
+
+private:
+    std::size_t index(int x, int y) const {
+        return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+               static_cast<std::size_t>(x);
+    }
+    int width_ = 0, height_ = 0;
+    std::vector<Rgba8> pixels_;
+};
+
+// Blends `color` through the coverage `mask` onto `image` with the mask's top-left pixel at
+// (x, y) (parts outside the image are clipped), in linear light: for each channel
+// out = enc(lerp(dec(dst), dec(color), coverage·color.a)). Alpha is composited "over".
+void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color);
+// The same for an LCD mask (3 bytes per pixel, `mask.width` = 3 × pixels, in the order given):
+// each colour channel uses its own subpixel coverage.
+void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, bool bgr);
+
+// PNG colour layouts for writing.
+enum class PngColor : std::uint8_t { Gray, Rgb, Rgba };
+// Writes `image` as PNG in `color` (Gray: luma of the sRGB values, Rec. 709 weights; alpha
+// dropped unless Rgba). Fast compression (zlib level 1, no filtering search) by default; errors
+// name the file.
+Status write_png(const std::string& file, const Image& image, PngColor color = PngColor::Rgba);
+// PNG bytes in memory (for stdout and atomic writes).
+Expected<std::vector<std::uint8_t>> encode_png(const Image& image, PngColor color);
+Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask);
+// Netpbm: binary PGM (P5, luma) or PPM (P6, RGB), alpha dropped.
+std::vector<std::uint8_t> encode_pgm(const Image& image);
+std::vector<std::uint8_t> encode_ppm(const Image& image);
+std::vector<std::uint8_t> encode_pgm(ConstMaskView mask);
+// A terminal preview: 24-bit colour ANSI escapes, two image rows per text line (the upper half
+// block U+2580 with foreground = upper pixel, background = lower pixel), at most `max_columns`
+// characters wide (the image is box-filtered down to fit; 0 = no limit).
+std::string encode_ansi(const Image& image, int max_columns = 0);
 
 }  // namespace bezel

@@ -20,6 +20,7 @@
 // once; separate Rasterizers are independent and may run on separate threads.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -67,6 +68,47 @@ inline FlattenOptions raster_flatten_defaults() {
     return o;
 }
 
+// --- Overlapping contours ----------------------------------------------------------------------
+// How coverage is formed where contours overlap (variable fonts and glyphs the font marks with
+// OVERLAP_SIMPLE / OVERLAP_COMPOUND, FreeType's FT_OUTLINE_OVERLAP).
+//   Accumulate: plain signed-area accumulation, exact for non-overlapping contours; where two
+//               contours' anti-aliased edges overlap inside one pixel their partial coverages
+//               add, which over-darkens that pixel (FreeType's default behaviour).
+//   Accurate:   the overlap is resolved before coverage is formed, so an overlapped edge pixel is
+//               as dark as the union of the shapes covers it (within the error stated at the
+//               implementation). Slower; the default for glyphs with overlapping_contours.
+enum class OverlapMode : std::uint8_t { Accumulate, Accurate };
+
+// --- LCD subpixel rendering ---------------------------------------------------------------------
+// Order of the subpixels in a display pixel, left to right.
+enum class LcdOrder : std::uint8_t { Rgb, Bgr };
+// A 5-tap FIR filter applied horizontally to coverage sampled at 3× horizontal resolution, in
+// 1/256 units (sum 256 for a filter that keeps total coverage).
+struct LcdFilter {
+    std::array<std::uint8_t, 5> taps;
+};
+// FreeType's default (FT_LCD_FILTER_DEFAULT): 0x08 0x4D 0x56 0x4D 0x08, sum 256.
+inline constexpr LcdFilter kLcdFilterDefault{{0x08, 0x4D, 0x56, 0x4D, 0x08}};
+// Extra display pixels an LCD rendering needs on each side of the outline's box: the filter
+// spreads coverage two subpixels out.
+inline constexpr int kLcdPaddingPx = 1;
+
+// --- Gamma / contrast ---------------------------------------------------------------------------
+// Coverage from the rasterizer is LINEAR (area fraction). A compositor that blends in a non-linear
+// space (sRGB bytes, as most toolkits do) can map coverage through this table first to get
+// stroke weights close to blending in linear light. `gamma` > 0 (1 = identity); `contrast` in
+// [0, 1] raises mid coverage further (0 = none). Formula at the implementation.
+class GammaTable {
+public:
+    explicit GammaTable(double gamma = 1.0, double contrast = 0.0);
+    std::uint8_t operator()(std::uint8_t coverage) const { return table_[coverage]; }
+    void apply(const MaskView& mask) const;   // in place, every pixel
+    const std::array<std::uint8_t, 256>& table() const { return table_; }
+
+private:
+    std::array<std::uint8_t, 256> table_{};
+};
+
 // The SIMD level of the coverage sweep chosen for this CPU at run time: "avx2" or "sse2".
 const char* raster_kernel_name();
 
@@ -101,6 +143,21 @@ public:
     Status fill_path(const Path& path, const Affine& transform, FillRule rule,
                      const FloatMaskView& target,
                      const FlattenOptions& flatten_options = raster_flatten_defaults());
+
+    // fill_path with a choice of overlap handling (OverlapMode::Accumulate is fill_path).
+    Status fill_path(const Path& path, const Affine& transform, FillRule rule,
+                     OverlapMode overlap, const MaskView& target,
+                     const FlattenOptions& flatten_options = raster_flatten_defaults());
+
+    // LCD subpixel coverage: the path (mapped by `transform` to DISPLAY pixels) is sampled at 3×
+    // horizontal resolution, filtered by `filter`, and written as 3 bytes per display pixel in
+    // `order`: `target.width` is 3 × the display width (FreeType's FT_PIXEL_MODE_LCD layout).
+    // The caller leaves kLcdPaddingPx display pixels of room on each side of the outline. Errors
+    // as fill_path, plus a target width that is not a multiple of 3.
+    Status fill_path_lcd(const Path& path, const Affine& transform, FillRule rule, LcdOrder order,
+                         const MaskView& target, OverlapMode overlap = OverlapMode::Accumulate,
+                         const LcdFilter& filter = kLcdFilterDefault,
+                         const FlattenOptions& flatten_options = raster_flatten_defaults());
 
     // Bytes of scratch memory currently held (for tests of the no-allocation promise).
     std::size_t scratch_capacity_bytes() const;
