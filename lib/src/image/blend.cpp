@@ -1,0 +1,109 @@
+// Compositing coverage masks onto RGBA8 images in linear light.
+//
+// The sRGB tables and their precision: image/srgb.hpp.
+//
+// Straight alpha "over" in linear light, α = coverage · colour.a (both in [0, 1]):
+//   out.a = α + dst.a·(1 − α)
+//   out.c = enc((dec(src.c)·α + dec(dst.c)·dst.a·(1 − α)) / out.a)
+// For an opaque destination this is out.c = enc(lerp(dec(dst.c), dec(src.c), α)).
+#include <algorithm>
+
+#include "bezel/image.hpp"
+#include "image/srgb.hpp"
+
+namespace bezel {
+
+namespace {
+
+// One destination pixel blended with the source colour (already decoded) at alphas per channel
+// (one alpha for gray masks, three for LCD); `a` is the alpha for the alpha channel.
+inline void blend_pixel(const SrgbTables& t, Rgba8& d, const float src[3], const float alpha[3],
+                        float a) {
+    if (d.a == 255) {
+        // Opaque destination: the common case, a lerp per channel.
+        std::uint8_t* ch[3] = {&d.r, &d.g, &d.b};
+        for (int k = 0; k < 3; ++k) {
+            float dl = t.decode[*ch[k]];
+            *ch[k] = t.enc(dl + (src[k] - dl) * alpha[k]);
+        }
+        return;
+    }
+    float da = d.a / 255.0f;
+    float out_a = a + da * (1.0f - a);
+    if (out_a <= 0.0f) return;
+    std::uint8_t* ch[3] = {&d.r, &d.g, &d.b};
+    for (int k = 0; k < 3; ++k) {
+        float dl = t.decode[*ch[k]];
+        // Per-channel alphas (LCD) weight each channel by its own α, the alpha channel by `a`.
+        float mixed = src[k] * alpha[k] + dl * da * (1.0f - alpha[k]);
+        float norm = alpha[k] + da * (1.0f - alpha[k]);
+        *ch[k] = t.enc(norm > 0.0f ? mixed / norm : 0.0f);
+    }
+    d.a = static_cast<std::uint8_t>(std::lround(out_a * 255.0f));
+}
+
+// The part of a mask of `w` × `h` pixels at (x, y) that lies inside the image.
+struct Clip {
+    int x0, y0, x1, y1;  // mask pixel range [x0, x1) × [y0, y1)
+    bool empty() const { return x0 >= x1 || y0 >= y1; }
+};
+Clip clip(const Image& image, int w, int h, int x, int y) {
+    // 64-bit sums: a mask placed near INT_MAX must not overflow.
+    long long x0 = std::max(0LL, -static_cast<long long>(x));
+    long long y0 = std::max(0LL, -static_cast<long long>(y));
+    long long x1 = std::min<long long>(w, static_cast<long long>(image.width()) - x);
+    long long y1 = std::min<long long>(h, static_cast<long long>(image.height()) - y);
+    return {static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(std::max(x0, x1)),
+            static_cast<int>(std::max(y0, y1))};
+}
+
+}  // namespace
+
+void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color) {
+    Clip c = clip(image, mask.width, mask.height, x, y);
+    if (c.empty() || color.a == 0) return;
+    const SrgbTables& t = srgb_tables();
+    const float src[3] = {t.decode[color.r], t.decode[color.g], t.decode[color.b]};
+    const float color_a = color.a / 255.0f;
+    for (int my = c.y0; my < c.y1; ++my) {
+        const std::uint8_t* m = mask.row(my);
+        // Indexed from the first visible pixel: `x` may be negative.
+        Rgba8* d = image.row(y + my) + (x + c.x0);
+        for (int mx = c.x0; mx < c.x1; ++mx, ++d) {
+            std::uint8_t cov = m[mx];
+            if (cov == 0) continue;
+            if (cov == 255 && color.a == 255) {
+                *d = color;
+                continue;
+            }
+            float a = cov / 255.0f * color_a;
+            const float alpha[3] = {a, a, a};
+            blend_pixel(t, *d, src, alpha, a);
+        }
+    }
+}
+
+void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, bool bgr) {
+    Clip c = clip(image, mask.width / 3, mask.height, x, y);
+    if (c.empty() || color.a == 0) return;
+    const SrgbTables& t = srgb_tables();
+    const float src[3] = {t.decode[color.r], t.decode[color.g], t.decode[color.b]};
+    const float color_a = color.a / 255.0f;
+    const int r_at = bgr ? 2 : 0, b_at = bgr ? 0 : 2;
+    for (int my = c.y0; my < c.y1; ++my) {
+        const std::uint8_t* m = mask.row(my);
+        Rgba8* d = image.row(y + my) + (x + c.x0);
+        for (int mx = c.x0; mx < c.x1; ++mx, ++d) {
+            const std::uint8_t* p = m + 3 * mx;
+            std::uint8_t cr = p[r_at], cg = p[1], cb = p[b_at];
+            if ((cr | cg | cb) == 0) continue;
+            const float alpha[3] = {cr / 255.0f * color_a, cg / 255.0f * color_a,
+                                    cb / 255.0f * color_a};
+            // The alpha channel takes the strongest subpixel: the pixel is at least that covered.
+            float a = std::max({alpha[0], alpha[1], alpha[2]});
+            blend_pixel(t, *d, src, alpha, a);
+        }
+    }
+}
+
+}  // namespace bezel

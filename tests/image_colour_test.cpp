@@ -1,0 +1,245 @@
+// Colour images: hb-view colour syntax, linear-light compositing, PNG / Netpbm / ANSI encoders.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "bezel/image.hpp"
+#include "image/srgb.hpp"
+
+namespace bezel {
+namespace {
+
+const Rgba8 kWhite{255, 255, 255, 255};
+const Rgba8 kBlack{0, 0, 0, 255};
+
+std::string temp_file(const std::string& name) {
+    return (std::filesystem::temp_directory_path() /
+            ("bezel_image_colour_" + std::to_string(::getpid()) + "_" + name))
+        .string();
+}
+
+TEST(ParseColor, AcceptsHbViewForms) {
+    EXPECT_EQ(*parse_color("#FF8000"), (Rgba8{255, 128, 0, 255}));
+    EXPECT_EQ(*parse_color("ff800080"), (Rgba8{255, 128, 0, 128}));
+    EXPECT_EQ(*parse_color("#ff8000"), (Rgba8{255, 128, 0, 255}));
+    EXPECT_EQ(*parse_color("#F80"), (Rgba8{255, 136, 0, 255}));
+    EXPECT_EQ(*parse_color("#F808"), (Rgba8{255, 136, 0, 136}));
+    EXPECT_EQ(*parse_color("White"), kWhite);
+    EXPECT_EQ(*parse_color("green"), (Rgba8{0, 128, 0, 255}));
+    EXPECT_EQ(*parse_color("transparent"), (Rgba8{0, 0, 0, 0}));
+}
+
+TEST(ParseColor, ErrorsNameTheText) {
+    for (const char* bad : {"#GG0000", "#12345", "", "F80", "#", "reddish", "#FF00000"}) {
+        auto c = parse_color(bad);
+        ASSERT_FALSE(c) << bad;
+        EXPECT_NE(c.error().message.find("'" + std::string(bad) + "'"), std::string::npos)
+            << c.error().message;
+    }
+}
+
+TEST(Srgb, EncodeOfDecodeIsIdentityForEveryByte) {
+    const SrgbTables& t = srgb_tables();
+    for (int v = 0; v < 256; ++v) EXPECT_EQ(t.enc(t.decode[static_cast<std::size_t>(v)]), v) << v;
+    EXPECT_NEAR(t.decode[188], 0.5, 0.003);  // the byte that means half the light
+}
+
+TEST(BlendMask, HalfCoverageIsHalfTheLightNotHalfTheByte) {
+    // 50% black on white is 0.5 linear light: sRGB byte 188 (±1 for the 8-bit coverage step),
+    // where naive sRGB-space blending would give 128.
+    for (std::uint8_t cov : {std::uint8_t{127}, std::uint8_t{128}}) {
+        Image image(1, 1, kWhite);
+        std::uint8_t m = cov;
+        blend_mask(image, ConstMaskView(&m, 1, 1, 1), 0, 0, kBlack);
+        EXPECT_NEAR(image.at(0, 0).r, 188, 1);
+        EXPECT_EQ(image.at(0, 0).r, image.at(0, 0).b);
+        EXPECT_EQ(image.at(0, 0).a, 255);
+    }
+    // White on black at half coverage is the same half of the light.
+    Image dark(1, 1, kBlack);
+    std::uint8_t m = 128;
+    blend_mask(dark, ConstMaskView(&m, 1, 1, 1), 0, 0, kWhite);
+    EXPECT_NEAR(dark.at(0, 0).g, 188, 1);
+}
+
+TEST(BlendMask, FullAndZeroCoverageAndColourAlpha) {
+    Image image(3, 1, Rgba8{10, 200, 30, 255});
+    const std::uint8_t m[3] = {0, 255, 255};
+    blend_mask(image, ConstMaskView(m, 2, 1, 3), 0, 0, Rgba8{250, 5, 99, 255});
+    EXPECT_EQ(image.at(0, 0), (Rgba8{10, 200, 30, 255}));   // untouched
+    EXPECT_EQ(image.at(1, 0), (Rgba8{250, 5, 99, 255}));    // replaced
+    EXPECT_EQ(image.at(2, 0), (Rgba8{10, 200, 30, 255}));   // outside the mask
+    // A half-transparent colour at full coverage is half coverage of the opaque colour.
+    Image a(1, 1, kWhite), b(1, 1, kWhite);
+    std::uint8_t full = 255, half = 128;
+    blend_mask(a, ConstMaskView(&full, 1, 1, 1), 0, 0, Rgba8{0, 0, 0, 128});
+    blend_mask(b, ConstMaskView(&half, 1, 1, 1), 0, 0, kBlack);
+    EXPECT_EQ(a.at(0, 0), b.at(0, 0));
+}
+
+TEST(BlendMask, OverTransparentKeepsTheColourAndSetsAlpha) {
+    Image image(2, 1, Rgba8{0, 0, 0, 0});
+    const std::uint8_t m[2] = {255, 128};
+    blend_mask(image, ConstMaskView(m, 2, 1, 2), 0, 0, Rgba8{200, 100, 50, 255});
+    EXPECT_EQ(image.at(0, 0), (Rgba8{200, 100, 50, 255}));
+    // Straight alpha: the colour is not darkened by the empty destination.
+    EXPECT_EQ(image.at(1, 0).r, 200);
+    EXPECT_EQ(image.at(1, 0).b, 50);
+    EXPECT_EQ(image.at(1, 0).a, 128);
+}
+
+TEST(BlendMask, ClipsAtEveryEdge) {
+    // A 4×4 full mask at each of the four corners (partly outside), on a 3×3 image.
+    const std::uint8_t m[16] = {255, 255, 255, 255, 255, 255, 255, 255,
+                                255, 255, 255, 255, 255, 255, 255, 255};
+    for (auto [x, y] : {std::pair{-3, -3}, std::pair{2, -3}, std::pair{-3, 2}, std::pair{2, 2}}) {
+        Image image(3, 3, kWhite);
+        blend_mask(image, ConstMaskView(m, 4, 4, 4), x, y, kBlack);
+        int black = 0;
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i) black += image.at(i, j) == kBlack;
+        EXPECT_EQ(black, 1) << x << "," << y;
+    }
+    Image image(3, 3, kWhite);
+    blend_mask(image, ConstMaskView(m, 4, 4, 4), 1 << 30, -(1 << 30), kBlack);
+    blend_mask(image, ConstMaskView(m, 4, 4, 4), -2147483647, 2147483600, kBlack);
+    EXPECT_EQ(image, Image(3, 3, kWhite));
+}
+
+TEST(BlendLcdMask, EachChannelTakesItsSubpixel) {
+    const std::uint8_t m[3] = {255, 0, 0};  // only the first subpixel covered
+    Image rgb(1, 1, kWhite), bgr(1, 1, kWhite);
+    blend_lcd_mask(rgb, ConstMaskView(m, 3, 1, 3), 0, 0, kBlack, false);
+    blend_lcd_mask(bgr, ConstMaskView(m, 3, 1, 3), 0, 0, kBlack, true);
+    EXPECT_EQ(rgb.at(0, 0), (Rgba8{0, 255, 255, 255}));
+    EXPECT_EQ(bgr.at(0, 0), (Rgba8{255, 255, 0, 255}));
+    // Equal subpixels blend exactly as the gray mask does.
+    const std::uint8_t even[3] = {128, 128, 128};
+    std::uint8_t gray = 128;
+    Image a(1, 1, kWhite), b(1, 1, kWhite);
+    blend_lcd_mask(a, ConstMaskView(even, 3, 1, 3), 0, 0, kBlack, false);
+    blend_mask(b, ConstMaskView(&gray, 1, 1, 1), 0, 0, kBlack);
+    EXPECT_EQ(a, b);
+}
+
+Image test_pattern(int w, int h) {
+    Image image(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            image.at(x, y) = Rgba8{static_cast<std::uint8_t>(x * 37 + y),
+                                   static_cast<std::uint8_t>(y * 11), static_cast<std::uint8_t>(x ^ y),
+                                   static_cast<std::uint8_t>(255 - x)};
+    return image;
+}
+
+TEST(EncodePng, GrayRoundTripsThroughReadPngGray) {
+    Image image(5, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 5; ++x) {
+            auto v = static_cast<std::uint8_t>(x * 50 + y * 3);
+            image.at(x, y) = Rgba8{v, v, v, 255};
+        }
+    std::string file = temp_file("gray.png");
+    ASSERT_TRUE(write_png(file, image, PngColor::Gray));
+    auto back = read_png_gray(file);
+    ASSERT_TRUE(back) << back.error().message;
+    ASSERT_EQ(back->width(), 5);
+    ASSERT_EQ(back->height(), 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 5; ++x) EXPECT_EQ(back->at(x, y), image.at(x, y).r);
+    std::remove(file.c_str());
+}
+
+TEST(EncodePng, MaskRoundTripsExactly) {
+    std::uint8_t pixels[12];
+    for (int i = 0; i < 12; ++i) pixels[i] = static_cast<std::uint8_t>(i * 21);
+    // A 3×3 window of a 4-wide buffer: the stride is honoured.
+    auto png = encode_png_gray(ConstMaskView(pixels, 3, 3, 4));
+    ASSERT_TRUE(png);
+    std::string file = temp_file("mask.png");
+    std::FILE* f = std::fopen(file.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    std::fwrite(png->data(), 1, png->size(), f);
+    std::fclose(f);
+    auto back = read_png_gray(file);
+    ASSERT_TRUE(back);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 3; ++x) EXPECT_EQ(back->at(x, y), pixels[y * 4 + x]);
+    std::remove(file.c_str());
+}
+
+TEST(EncodePng, HeaderNamesTheColourType) {
+    Image image = test_pattern(7, 3);
+    const std::pair<PngColor, int> cases[] = {
+        {PngColor::Gray, 0}, {PngColor::Rgb, 2}, {PngColor::Rgba, 6}};
+    for (auto [color, type] : cases) {
+        auto png = encode_png(image, color);
+        ASSERT_TRUE(png);
+        ASSERT_GT(png->size(), 33u);
+        EXPECT_EQ(std::string(png->begin() + 1, png->begin() + 4), "PNG");
+        EXPECT_EQ((*png)[19], 7);         // IHDR width, low byte
+        EXPECT_EQ((*png)[24], 8);         // bit depth
+        EXPECT_EQ((*png)[25], type);      // colour type
+    }
+}
+
+TEST(EncodePng, ErrorsNameTheFile) {
+    auto empty = encode_png(Image(0, 3), PngColor::Rgb);
+    ASSERT_FALSE(empty);
+    EXPECT_NE(empty.error().message.find("0x3"), std::string::npos);
+    std::string file = "/nonexistent-dir/bezel/out.png";
+    auto st = write_png(file, test_pattern(2, 2));
+    ASSERT_FALSE(st);
+    EXPECT_EQ(st.error().message.rfind(file + ": ", 0), 0u) << st.error().message;
+}
+
+TEST(EncodePnm, HeadersAndBytes) {
+    Image image(2, 1);
+    image.at(0, 0) = Rgba8{255, 0, 0, 10};
+    image.at(1, 0) = Rgba8{1, 2, 3, 255};
+    auto ppm = encode_ppm(image);
+    EXPECT_EQ(std::string(ppm.begin(), ppm.end()), std::string("P6\n2 1\n255\n\xff\x00\x00\x01\x02\x03", 17));
+    auto pgm = encode_pgm(image);
+    // Rec. 709 luma: red alone is 0.2126 → 54; (1,2,3) → 2.
+    EXPECT_EQ(std::string(pgm.begin(), pgm.end()), std::string("P5\n2 1\n255\n\x36\x02", 13));
+    const std::uint8_t m[4] = {9, 8, 7, 6};
+    auto mask_pgm = encode_pgm(ConstMaskView(m, 1, 2, 2));
+    EXPECT_EQ(std::string(mask_pgm.begin(), mask_pgm.end()), std::string("P5\n1 2\n255\n\x09\x07", 13));
+}
+
+TEST(EncodeAnsi, HalfBlocksWithTwentyFourBitColour) {
+    Image image(2, 2, kWhite);
+    image.at(0, 0) = Rgba8{255, 0, 0, 255};
+    image.at(0, 1) = Rgba8{0, 0, 255, 255};
+    std::string out = encode_ansi(image);
+    EXPECT_NE(out.find("\x1b[38;2;255;0;0m"), std::string::npos);
+    EXPECT_NE(out.find("\x1b[48;2;0;0;255m"), std::string::npos);
+    // One text line of two cells.
+    std::size_t blocks = 0;
+    for (std::size_t at = out.find("\xe2\x96\x80"); at != std::string::npos;
+         at = out.find("\xe2\x96\x80", at + 1))
+        ++blocks;
+    EXPECT_EQ(blocks, 2u);
+    EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 1);
+}
+
+TEST(EncodeAnsi, BoxFilterFitsMaxColumnsInLinearLight) {
+    // 8 × 2 of alternating black / white columns, shown in at most 2 columns: factor 4, so one
+    // line of two cells whose colour is the linear mean, 188, not the byte mean 128.
+    Image image(8, 2, kWhite);
+    for (int x = 0; x < 8; x += 2) image.at(x, 0) = image.at(x, 1) = kBlack;
+    std::string out = encode_ansi(image, 2);
+    EXPECT_NE(out.find("\x1b[38;2;188;188;188m"), std::string::npos) << out;
+    std::size_t blocks = 0;
+    for (std::size_t at = out.find("\xe2\x96\x80"); at != std::string::npos;
+         at = out.find("\xe2\x96\x80", at + 1))
+        ++blocks;
+    EXPECT_EQ(blocks, 2u);
+}
+
+}  // namespace
+}  // namespace bezel
