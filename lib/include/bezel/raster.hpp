@@ -23,6 +23,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "bezel/expected.hpp"
@@ -109,6 +110,11 @@ private:
     std::array<std::uint8_t, 256> table_{};
 };
 
+namespace raster_detail {
+struct FeatureScratch;  // src/raster/overlap.hpp: scratch of the LCD and accurate-overlap fills
+void release(FeatureScratch* scratch);
+}  // namespace raster_detail
+
 // The SIMD level of the coverage sweep chosen for this CPU at run time: "avx2" or "sse2".
 const char* raster_kernel_name();
 
@@ -172,6 +178,9 @@ private:
     std::vector<float> acc_;            // per-band cell deltas; all zero between calls
     std::vector<std::uint8_t> flags_;   // per-band "block has deltas" marks; all zero between calls
     Polylines flattened_;      // fill_path's reused polylines
+    // LCD and accurate-overlap scratch (lcd.cpp, overlap.cpp), made on their first use.
+    std::unique_ptr<raster_detail::FeatureScratch, void (*)(raster_detail::FeatureScratch*)>
+        features_{nullptr, &raster_detail::release};
 };
 
 }  // namespace bezel

@@ -4,6 +4,8 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
@@ -21,6 +23,22 @@ struct FaceDeleter {
 };
 using LibraryPtr = std::unique_ptr<FT_LibraryRec_, LibraryDeleter>;
 using FacePtr = std::unique_ptr<FT_FaceRec_, FaceDeleter>;
+
+// render_with_freetype's last loaded outline (freetype_render.cpp), kept so that a timing loop
+// rendering one glyph again measures FreeType's rasterizer rather than its glyph loader.
+struct FreeTypeRenderCache {
+    bool valid = false;
+    FT_UInt gid = 0;
+    FT_F26Dot6 size_26_6 = 0;
+    int axis_count = -1;              // the face's variation axes, looked up once
+    std::vector<FT_Fixed> coords;     // variation blend coordinates the outline was loaded at
+    std::vector<FT_Vector> loaded;    // the scaled outline as loaded (26.6, y up)
+    std::vector<FT_Vector> points;    // the same, translated by (dx, dy)
+    FT_Pos dx = 0, dy = 0;
+    std::vector<std::remove_pointer_t<decltype(FT_Outline::tags)>> tags;
+    std::vector<std::remove_pointer_t<decltype(FT_Outline::contours)>> contours;
+    int outline_flags = 0;
+};
 }  // namespace font_detail
 
 struct Font::Impl {
@@ -33,6 +51,7 @@ struct Font::Impl {
     // The 26.6 char size last set with FT_Set_Char_Size (hinted loads only), 0 when none, so a
     // run of glyphs at one size sets it once.
     FT_F26Dot6 char_size_26_6 = 0;
+    font_detail::FreeTypeRenderCache render_cache;
 };
 
 }  // namespace bezel

@@ -1,0 +1,90 @@
+// Rasterizer::fill_path_lcd: coverage sampled at 3× horizontal resolution, then FreeType's 5-tap
+// FIR filter across subpixels.
+//
+// Sampling: subpixel k of the output covers display x in [k/3, (k+1)/3], i.e. the path mapped by
+// scale(3, 1)·transform, rasterized exactly (float coverage, no 8-bit rounding before the filter).
+// The samples are taken two subpixels beyond each side of the target, because the filter reaches
+// two subpixels out: a shape just outside the target still bleeds into its border subpixels.
+//
+// Filter: out[k] = Σ_{j=−2..2} taps[j+2] · s[k+j] / 256, rounded to 8 bits. With the default taps
+// (sum 256) every sample's coverage is spread over five subpixels without loss, so a full interior
+// stays 255 and the total coverage is unchanged (up to rounding) when the outline keeps
+// kLcdPaddingPx display pixels from the target's sides.
+//
+// Order: the bytes of a display pixel are always R, G, B in memory (FreeType's FT_PIXEL_MODE_LCD
+// layout); `order` is the PANEL's subpixel order. On an RGB panel red lights the left third, so R
+// takes subpixel 3p; on a BGR panel red is the right third, so R takes subpixel 3p + 2 — the Bgr
+// output is the Rgb output reversed within each pixel.
+//
+// Memory: the float samples are processed in bands of at most kMaxBandCells floats (the path is
+// re-flattened per band, which only tall targets need), so scratch stays bounded.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "bezel/raster.hpp"
+#include "raster/overlap.hpp"
+
+namespace bezel {
+
+namespace {
+
+constexpr int kFilterReach = 2;  // subpixels the 5-tap filter reads on each side
+
+void filter_row(const float* samples, int width, const LcdFilter& f, LcdOrder order,
+                std::uint8_t* out) {
+    const bool reverse = order == LcdOrder::Bgr;
+    for (int k = 0; k < width; ++k) {
+        // samples[k + kFilterReach] is subpixel k.
+        const float* s = samples + k;
+        const double v = f.taps[0] * double(s[0]) + f.taps[1] * double(s[1]) +
+                         f.taps[2] * double(s[2]) + f.taps[3] * double(s[3]) +
+                         f.taps[4] * double(s[4]);
+        const double byte = std::min(255.0, v * (255.0 / 256.0) + 0.5);
+        const int at = reverse ? k - k % 3 + (2 - k % 3) : k;
+        out[at] = static_cast<std::uint8_t>(byte);
+    }
+}
+
+}  // namespace
+
+Status Rasterizer::fill_path_lcd(const Path& path, const Affine& transform, FillRule rule,
+                                 LcdOrder order, const MaskView& target, OverlapMode overlap,
+                                 const LcdFilter& filter, const FlattenOptions& flatten_options) {
+    const int W = target.width, H = target.height;
+    const int samples_w = W + 2 * kFilterReach;
+    if (W < 0 || H < 0 || samples_w > kMaxBitmapDim || H > kMaxBitmapDim)
+        return Error{"LCD target " + std::to_string(W) + "x" + std::to_string(H) +
+                     " is outside 0.." + std::to_string(kMaxBitmapDim - 2 * kFilterReach) + "x" +
+                     std::to_string(kMaxBitmapDim) + " (kMaxBitmapDim less the filter's reach)"};
+    if (W % 3 != 0)
+        return Error{"LCD target width " + std::to_string(W) +
+                     " is not a multiple of 3 (3 bytes per display pixel)"};
+    if (target.data == nullptr && W > 0 && H > 0)
+        return Error{"LCD target " + std::to_string(W) + "x" + std::to_string(H) +
+                     " has no pixel memory (null data)"};
+    if (!transform.is_finite()) return Error{"fill_path_lcd: transform is not finite"};
+    if (!features_) features_.reset(new raster_detail::FeatureScratch);
+    std::vector<float>& samples = features_->lcd_samples;
+
+    const int band_rows = std::max(
+        1, std::min(H, static_cast<int>(kMaxBandCells / static_cast<std::size_t>(samples_w))));
+    const std::size_t need = static_cast<std::size_t>(band_rows) * static_cast<std::size_t>(samples_w);
+    if (samples.size() < need) samples.resize(need);
+    const Affine to_samples = Affine::scale(3.0, 1.0) * transform;
+    for (int y0 = 0; y0 < H; y0 += band_rows) {
+        const int rows = std::min(band_rows, H - y0);
+        const FloatMaskView band{samples.data(), samples_w, rows, samples_w};
+        const Affine m = Affine::translate({double(kFilterReach), -double(y0)}) * to_samples;
+        // The first band's fill checks the path; a later band only moves the rows.
+        if (Status st = fill_path(path, m, rule, band, flatten_options); !st) return st;
+        if (overlap == OverlapMode::Accurate)
+            raster_detail::fill_region_exact(path, m, rule, flatten_options, band,
+                                             features_->overlap);
+        for (int r = 0; r < rows; ++r)
+            filter_row(band.row(r), W, filter, order, target.row(y0 + r));
+    }
+    return ok_status();
+}
+
+}  // namespace bezel

@@ -1,0 +1,79 @@
+// Private: exact coverage of the filled REGION, for overlapping contours (OverlapMode::Accurate),
+// and the scratch the LCD and accurate fills keep in a Rasterizer.
+//
+// Why plain accumulation over-darkens. Area accumulation gives each pixel ∫ w(x, y) dA, the
+// integral of the winding number, clamped to 1. Where two contours with the same orientation
+// overlap, w = 2, so a pixel crossed by an anti-aliased edge of one contour lying over a partly
+// covered pixel of the other counts that part twice: two identical squares drawn on top of each
+// other give an edge pixel of true coverage 0.5 the value min(2·0.5, 1) = 1.
+//
+// The exact method. Coverage should be the AREA of {p : rule(w(p)) is inside}. Inside one pixel
+// row, cut the row into horizontal SLABS at every edge end point and every crossing of two
+// edges. Within a slab no two edges cross, so their left-to-right order is fixed, and the
+// winding number is constant between consecutive edges. Sweeping the edges in that order, only
+// the edges where "inside" flips are boundary edges of the region: an edge entering the region
+// (outside → inside) adds +1 × its slab piece's signed area to the right, an edge leaving it −1,
+// and every other edge (one that moves w between 1 and 2, say) adds nothing. The accumulated
+// area is then exactly the area of the region inside each cell, whatever the overlap.
+//
+// Error bound: exact up to floating point — the crossings are found in double, so a slab may
+// hold a residual crossing displaced by ~1e-12 px, an error of that order times the row width.
+// Measured against the 16×16 supersampled reference, it matches the plain rasterizer's error on
+// non-overlapping outlines (tests/raster_overlap_test.cpp, README).
+//
+// Cost: per row, O(k²) crossing tests for k edges active in it, then O(k log k) per slab. Total
+// work is bounded by kMaxOverlapWork (below); past it the remaining rows keep the plain
+// accumulation the caller has already written (so hostile input degrades to
+// OverlapMode::Accumulate instead of running away).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "bezel/flatten.hpp"
+#include "bezel/image.hpp"
+#include "bezel/raster.hpp"
+
+namespace bezel::raster_detail {
+
+// Edge visits (crossing tests plus edges swept per slab) one accurate fill may make: 2^26, about
+// 0.1–0.3 s. The most complex glyph of DejaVu Sans at 512 px takes about 1/100 of it.
+inline constexpr std::size_t kMaxOverlapWork = std::size_t{1} << 26;
+
+// One non-horizontal polygon edge, top end first (y down).
+struct UnionEdge {
+    double x_top, y_top, x_bot, y_bot;
+    double dxdy;    // x change per unit of y
+    int winding;    // +1 for an edge drawn downwards, −1 upwards
+    double x_at(double y) const { return x_top + (y - y_top) * dxdy; }
+};
+
+struct SlabEdge {
+    double x_mid;
+    std::uint32_t edge;
+};
+
+struct OverlapScratch {
+    Polylines lines;                    // the flattened path
+    std::vector<UnionEdge> edges;       // sorted by y_top
+    std::vector<std::uint32_t> active;  // edges meeting the current row
+    std::vector<double> events;         // slab boundaries of the current row
+    std::vector<SlabEdge> slab;         // edges of the current slab, sorted by x_mid
+    std::vector<double> cells;          // the current row's area deltas (width + 2)
+};
+
+struct FeatureScratch {
+    OverlapScratch overlap;
+    std::vector<float> lcd_samples;  // 3× horizontal float coverage, lcd.cpp
+};
+
+// Flattens `path` exactly as Rasterizer::fill_path does and writes the region's exact coverage
+// into `target` (every row that the work bound allows; the others are left as they are).
+// Precondition: the same fill_path call (same path, transform, options, target size) has just
+// succeeded, so every input check and the edge budget have passed.
+template <typename View>
+void fill_region_exact(const Path& path, const Affine& transform, FillRule rule,
+                       const FlattenOptions& options, const View& target, OverlapScratch& s);
+
+}  // namespace bezel::raster_detail
