@@ -1,0 +1,50 @@
+// A linear-light RGB accumulation buffer with per-pixel coverage, for the surface pictures.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "bezel/image.hpp"
+
+namespace bezel::surface_detail {
+
+struct LinearRgb {
+    float r = 0, g = 0, b = 0;
+};
+
+// sRGB (IEC 61966-2-1) byte → linear [0, 1], and back (rounded).
+float srgb_to_linear(std::uint8_t v);
+std::uint8_t linear_to_srgb(float v);
+LinearRgb linear(Rgba8 c);
+
+class Framebuffer {
+public:
+    Framebuffer(int width, int height);
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // Saturating "under": adds min(alpha, 1 − coverage so far) of `c` at (x, y). Front-to-back
+    // drawing with this is OpenGL's GL_SRC_ALPHA_SATURATE polygon antialiasing: abutting
+    // triangles' partial coverages add up to 1 instead of leaving a seam.
+    void add_saturating(int x, int y, float alpha, LinearRgb c) {
+        std::size_t k = index(x, y);
+        float take = std::min(alpha, 1.0f - cover_[k]);
+        if (take <= 0.0f) return;
+        rgb_[k].r += take * c.r, rgb_[k].g += take * c.g, rgb_[k].b += take * c.b;
+        cover_[k] += take;
+    }
+    float cover(int x, int y) const { return cover_[index(x, y)]; }
+    // The picture over `background`: rgb + (1 − coverage)·background, encoded to sRGB, opaque.
+    Image resolve(Rgba8 background) const;
+
+private:
+    std::size_t index(int x, int y) const {
+        return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+               static_cast<std::size_t>(x);
+    }
+    int width_, height_;
+    std::vector<LinearRgb> rgb_;
+    std::vector<float> cover_;
+};
+
+}  // namespace bezel::surface_detail

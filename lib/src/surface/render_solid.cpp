@@ -1,0 +1,134 @@
+// Shaded pictures of triangle meshes: exact-area coverage from the Rasterizer, Lambert shading,
+// depth sort front to back with saturating coverage (the reasons are in surface.hpp).
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "bezel/raster.hpp"
+#include "bezel/surface.hpp"
+#include "surface/framebuffer.hpp"
+
+namespace bezel {
+namespace {
+
+using surface_detail::Framebuffer;
+using surface_detail::LinearRgb;
+
+struct Projected {
+    Vec2 p[3];
+    double depth[3];
+};
+
+double lambert(const SolidStyle& style, Vec3 n, Vec3 light) {
+    return style.ambient + (1.0 - style.ambient) * std::max(0.0, n.dot(light));
+}
+
+LinearRgb shade(LinearRgb base, double k) {
+    float f = static_cast<float>(k);
+    return {base.r * f, base.g * f, base.b * f};
+}
+
+}  // namespace
+
+Expected<Image> render_solid(const TriangleMesh& mesh, const View& view, const SolidStyle& style) {
+    if (mesh.triangles.size() > kMaxMeshTriangles)
+        return Error{"render: " + std::to_string(mesh.triangles.size()) + " triangles, more than " +
+                     std::to_string(kMaxMeshTriangles)};
+    if (mesh.normals.size() != mesh.positions.size())
+        return Error{"render: mesh has " + std::to_string(mesh.normals.size()) + " normals for " +
+                     std::to_string(mesh.positions.size()) + " vertices"};
+    for (const auto& t : mesh.triangles)
+        for (std::uint32_t v : t)
+            if (v >= mesh.positions.size()) return Error{"render: triangle index out of range"};
+    if (!(style.ambient >= 0.0 && style.ambient <= 1.0))
+        return Error{"render: ambient must be in [0, 1]"};
+    Vec3 light = (view.right() * style.light.x + view.up() * style.light.y -
+                  view.forward() * style.light.z).normalized();
+    if (light == Vec3{}) return Error{"render: light direction is zero or not finite"};
+
+    // Project every vertex once; order triangles nearest first by centroid depth.
+    std::vector<Vec3> screen(mesh.positions.size());
+    std::vector<char> visible(mesh.positions.size());
+    for (std::size_t k = 0; k < screen.size(); ++k) {
+        screen[k] = view.project(mesh.positions[k]);
+        visible[k] = view.in_front(mesh.positions[k]) && screen[k].is_finite();
+    }
+    std::vector<std::uint32_t> order;
+    order.reserve(mesh.triangles.size());
+    std::vector<double> key(mesh.triangles.size());
+    for (std::size_t m = 0; m < mesh.triangles.size(); ++m) {
+        const auto& t = mesh.triangles[m];
+        if (!visible[t[0]] || !visible[t[1]] || !visible[t[2]]) continue;
+        key[m] = screen[t[0]].z + screen[t[1]].z + screen[t[2]].z;
+        order.push_back(static_cast<std::uint32_t>(m));
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+
+    const int W = view.width(), H = view.height();
+    Framebuffer fb(W, H);
+    const LinearRgb base = surface_detail::linear(style.color);
+    const float alpha = style.color.a / 255.0f;
+    Rasterizer rasterizer;
+    Polylines tri;
+    std::vector<std::uint8_t> cover;
+    for (std::uint32_t m : order) {
+        const auto& t = mesh.triangles[m];
+        const Vec3 a = screen[t[0]], b = screen[t[1]], c = screen[t[2]];
+        const Vec2 pa{a.x, a.y}, pb{b.x, b.y}, pc{c.x, c.y};
+        const double area2 = (pb - pa).cross(pc - pa);
+        if (!(std::fabs(area2) > 1e-12)) continue;
+        const int x0 = std::max(0, static_cast<int>(std::floor(std::min({a.x, b.x, c.x}))));
+        const int y0 = std::max(0, static_cast<int>(std::floor(std::min({a.y, b.y, c.y}))));
+        const int x1 = std::min(W, static_cast<int>(std::ceil(std::max({a.x, b.x, c.x}))));
+        const int y1 = std::min(H, static_cast<int>(std::ceil(std::max({a.y, b.y, c.y}))));
+        if (x0 >= x1 || y0 >= y1) continue;
+        const int bw = x1 - x0, bh = y1 - y0;
+        cover.resize(static_cast<std::size_t>(bw) * static_cast<std::size_t>(bh));
+        tri.clear();
+        tri.points = {pa, pb, pc};
+        tri.contour_ends = {3};
+        MaskView target{cover.data(), bw, bh, bw};
+        if (auto ok = rasterizer.fill(tri, FillRule::NonZero, target, Vec2{-double(x0), -double(y0)});
+            !ok)
+            return ok.error();
+
+        // Two-sided lighting: the facet and its vertex normals turned towards the viewer.
+        const Vec3 wa = mesh.positions[t[0]], wb = mesh.positions[t[1]], wc = mesh.positions[t[2]];
+        const Vec3 facet = (wb - wa).cross(wc - wa).normalized();
+        const double side = facet.dot(view.to_viewer((wa + wb + wc) / 3.0)) < 0.0 ? -1.0 : 1.0;
+        const LinearRgb flat = shade(base, lambert(style, facet * side, light));
+        const Vec3 n[3] = {mesh.normals[t[0]] * side, mesh.normals[t[1]] * side,
+                           mesh.normals[t[2]] * side};
+        const bool perspective = view.projection() == Projection::Perspective;
+        for (int y = y0; y < y1; ++y) {
+            const std::uint8_t* row = cover.data() + static_cast<std::size_t>(y - y0) * bw;
+            for (int x = x0; x < x1; ++x) {
+                const std::uint8_t cv = row[x - x0];
+                if (cv == 0 || fb.cover(x, y) >= 1.0f) continue;
+                LinearRgb colour = flat;
+                if (style.shading == Shading::Smooth) {
+                    // Screen-space barycentrics of the pixel centre, clamped into the triangle
+                    // (edge pixels have centres outside it), then perspective-corrected by 1/z.
+                    const Vec2 p{x + 0.5, y + 0.5};
+                    double l[3] = {(pb - p).cross(pc - p) / area2, (pc - p).cross(pa - p) / area2, 0};
+                    l[2] = 1.0 - l[0] - l[1];
+                    double sum = 0.0;
+                    for (int k = 0; k < 3; ++k) {
+                        l[k] = std::max(0.0, l[k]);
+                        if (perspective) l[k] /= (k == 0 ? a.z : k == 1 ? b.z : c.z);
+                        sum += l[k];
+                    }
+                    Vec3 ni = (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]) / sum;
+                    ni = ni.normalized();
+                    if (ni == Vec3{}) ni = facet * side;
+                    colour = shade(base, lambert(style, ni, light));
+                }
+                fb.add_saturating(x, y, alpha * static_cast<float>(cv) * (1.0f / 255.0f), colour);
+            }
+        }
+    }
+    return fb.resolve(style.background);
+}
+
+}  // namespace bezel
