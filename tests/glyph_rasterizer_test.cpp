@@ -1,0 +1,225 @@
+// GlyphRasterizer: FreeType's box convention, pixels equal to FreeType's own rasterizer at that
+// box, subpixel offsets, LCD boxes, and the input it refuses.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "bezel/text.hpp"
+
+namespace bezel {
+namespace {
+
+const std::string kDejaVu = BEZEL_FONTS_DIR "/dejavu-sans/DejaVuSans.ttf";
+const std::string kCantarell = BEZEL_FONTS_DIR "/cantarell/Cantarell-Regular.otf";
+
+struct FtBox {
+    char ch;
+    int left, top, width, height;
+};
+
+// FreeType 2.12's bitmap_left / bitmap_top / width / rows for FT_LOAD_NO_HINTING | FT_LOAD_RENDER
+// at FT_Set_Pixel_Sizes(0, 24) (a 20-line C program against libfreetype). These glyphs have
+// points at their extrema, so FreeType's control box is the tight box bezel uses.
+void expect_boxes_match_freetype(const std::string& file, const std::vector<FtBox>& expected) {
+    auto font = Font::open(file);
+    ASSERT_TRUE(font) << font.error().message;
+    GlyphRasterizer rasterizer(*font);
+    GlyphRenderOptions o;
+    o.size_px = 24;
+    for (const FtBox& e : expected) {
+        GlyphId gid = font->glyph_for_char(static_cast<char32_t>(e.ch)).value();
+        auto box = rasterizer.measure(gid, o);
+        ASSERT_TRUE(box) << box.error().message;
+        EXPECT_EQ(box->left, e.left) << e.ch;
+        EXPECT_EQ(box->top, e.top) << e.ch;
+        EXPECT_EQ(box->width, e.width) << e.ch;
+        EXPECT_EQ(box->height, e.height) << e.ch;
+    }
+}
+
+TEST(GlyphRasterizer, BoxMatchesFreeTypeBitmapLeftTop) {
+    expect_boxes_match_freetype(kDejaVu, {{'H', 2, 18, 14, 18}, {'o', 1, 14, 13, 15},
+                                          {'g', 1, 14, 13, 19}, {'W', 0, 18, 23, 18},
+                                          {'&', 1, 18, 17, 19}});
+    expect_boxes_match_freetype(kCantarell, {{'H', 2, 17, 14, 17}, {'o', 1, 12, 12, 13},
+                                             {'W', 0, 17, 24, 17}});
+}
+
+// Max and mean |a − b| over a box.
+struct Diff {
+    int max = 0;
+    double mean = 0;
+};
+Diff diff(ConstMaskView a, ConstMaskView b) {
+    Diff d;
+    long sum = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            int e = std::abs(a.at(x, y) - b.at(x, y));
+            d.max = std::max(d.max, e);
+            sum += e;
+        }
+    d.mean = static_cast<double>(sum) / (a.width * a.height);
+    return d;
+}
+
+TEST(GlyphRasterizer, PixelsAgreeWithFreeTypeAtTheSameBox) {
+    // FreeType rasterizes the same outline at the box's pen position. Its own curve flattening
+    // errs by up to 16-54/255 (raster_glyph_test), measured here at <= 16 and a mean <= 1.9, so: max <= 20 and mean
+    // <= 3 levels. A box or pen off by one pixel would cost ~255 along every edge and a mean
+    // of tens of levels.
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    GlyphRasterizer rasterizer(*font);
+    for (char32_t ch : {U'g', U'W', U'&', U'e'}) {
+        for (double sx : {0.0, 0.25, 0.5, 0.75}) {
+            GlyphRenderOptions o;
+            o.size_px = 24;
+            o.subpixel_x = sx;
+            GlyphId gid = *font->glyph_for_char(ch);
+            auto box = rasterizer.measure(gid, o);
+            ASSERT_TRUE(box);
+            Mask ours(box->width, box->height), theirs(box->width, box->height);
+            ASSERT_TRUE(rasterizer.render(gid, o, ours.view()));
+            ASSERT_TRUE(font->render_with_freetype(gid, {24, false}, theirs.view(),
+                                                   {sx - box->left, static_cast<double>(box->top)}));
+            Diff d = diff(ours.view(), theirs.view());
+            EXPECT_LE(d.max, 20) << char(ch) << " at +" << sx;
+            EXPECT_LE(d.mean, 3.0) << char(ch) << " at +" << sx;
+        }
+    }
+}
+
+TEST(GlyphRasterizer, RendersIntoTheCornerAndLeavesTheRestAlone) {
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    GlyphRasterizer rasterizer(*font);
+    GlyphId gid = *font->glyph_for_char(U'o');
+    GlyphRenderOptions o;
+    o.size_px = 20;
+    std::vector<std::uint8_t> buffer(40 * 30, 0x77);
+    MaskView target{buffer.data(), 35, 30, 40};   // stride wider than the view
+    auto box = rasterizer.render(gid, o, target);
+    ASSERT_TRUE(box);
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 40; ++x) {
+            bool inside = x < box->width && y < box->height;
+            if (!inside) {
+                EXPECT_EQ(buffer[static_cast<std::size_t>(y * 40 + x)], 0x77) << x << "," << y;
+            }
+        }
+    // The glyph touches every edge of its box (it is the smallest covering box).
+    int top = 0, bottom = 0, left = 0, right = 0;
+    for (int x = 0; x < box->width; ++x) {
+        top += target.at(x, 0);
+        bottom += target.at(x, box->height - 1);
+    }
+    for (int y = 0; y < box->height; ++y) {
+        left += target.at(0, y);
+        right += target.at(box->width - 1, y);
+    }
+    EXPECT_GT(top, 0);
+    EXPECT_GT(bottom, 0);
+    EXPECT_GT(left, 0);
+    EXPECT_GT(right, 0);
+}
+
+long coverage_sum(ConstMaskView m) {
+    long sum = 0;
+    for (int y = 0; y < m.height; ++y)
+        for (int x = 0; x < m.width; ++x) sum += m.at(x, y);
+    return sum;
+}
+
+TEST(GlyphRasterizer, SubpixelOffsetMovesInkNotArea) {
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    GlyphRasterizer rasterizer(*font);
+    GlyphId gid = *font->glyph_for_char(U'l');
+    GlyphRenderOptions o;
+    o.size_px = 30;
+    std::vector<double> centroids;
+    long area0 = -1;
+    for (double sx : {0.0, 0.25, 0.5, 0.75}) {
+        o.subpixel_x = sx;
+        auto box = rasterizer.measure(gid, o);
+        ASSERT_TRUE(box);
+        Mask m(box->width, box->height);
+        ASSERT_TRUE(rasterizer.render(gid, o, m.view()));
+        long area = coverage_sum(m.view());
+        if (area0 < 0) area0 = area;
+        EXPECT_NEAR(area, area0, area0 / 200.0);
+        double cx = 0;
+        for (int y = 0; y < m.height(); ++y)
+            for (int x = 0; x < m.width(); ++x) cx += (x + 0.5 + box->left) * m.at(x, y);
+        centroids.push_back(cx / static_cast<double>(area));
+    }
+    // Pixel sampling of the box-filtered bar biases the centroid by a few hundredths of a pixel
+    // (it is not shift-invariant), so each quarter step moves it 0.25 ± 0.08.
+    for (std::size_t i = 1; i < centroids.size(); ++i)
+        EXPECT_NEAR(centroids[i] - centroids[i - 1], 0.25, 0.08) << i;
+}
+
+TEST(GlyphRasterizer, LcdBoxIsPaddedAndKeepsTheInk) {
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    GlyphRasterizer rasterizer(*font);
+    GlyphId gid = *font->glyph_for_char(U'a');
+    GlyphRenderOptions gray;
+    gray.size_px = 18;
+    GlyphRenderOptions lcd = gray;
+    lcd.mode = RenderMode::LcdRgb;
+    auto g = rasterizer.measure(gid, gray);
+    auto l = rasterizer.measure(gid, lcd);
+    ASSERT_TRUE(g && l);
+    EXPECT_EQ(l->left, g->left - kLcdPaddingPx);
+    EXPECT_EQ(l->width, g->width + 2 * kLcdPaddingPx);
+    EXPECT_EQ(l->top, g->top);
+    Mask gm(g->width, g->height), lm(3 * l->width, l->height);
+    ASSERT_TRUE(rasterizer.render(gid, gray, gm.view()));
+    auto drawn = rasterizer.render(gid, lcd, lm.view());
+    ASSERT_TRUE(drawn) << drawn.error().message;
+    // Three subpixels per pixel, a filter of unit sum: three times the gray ink, within rounding.
+    double ratio = static_cast<double>(coverage_sum(lm.view())) / static_cast<double>(coverage_sum(gm.view()));
+    EXPECT_NEAR(ratio, 3.0, 0.05);
+}
+
+TEST(GlyphRasterizer, BlankGlyphHasAnAdvanceAndNoBox) {
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    GlyphRasterizer rasterizer(*font);
+    GlyphRenderOptions o;
+    o.size_px = 24;
+    auto box = rasterizer.render(*font->glyph_for_char(U' '), o, MaskView{});
+    ASSERT_TRUE(box) << box.error().message;
+    EXPECT_EQ(box->width, 0);
+    EXPECT_EQ(box->height, 0);
+    EXPECT_NEAR(box->advance, 24 * 651.0 / 2048.0, 1e-6);   // DejaVu's space: 651 units of 2048
+}
+
+TEST(GlyphRasterizer, RefusesBadInput) {
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    GlyphRasterizer rasterizer(*font);
+    GlyphId gid = *font->glyph_for_char(U'g');
+    GlyphRenderOptions o;
+    for (double bad : {1.0, -0.1, std::nan("")}) {
+        o.subpixel_x = bad;
+        auto box = rasterizer.measure(gid, o);
+        ASSERT_FALSE(box);
+        EXPECT_NE(box.error().message.find("glyph " + std::to_string(gid)), std::string::npos);
+    }
+    o.subpixel_x = 0;
+    std::uint8_t small[4] = {};
+    auto box = rasterizer.render(gid, o, MaskView{small, 2, 2, 2});
+    ASSERT_FALSE(box);
+    EXPECT_NE(box.error().message.find("smaller"), std::string::npos);
+    EXPECT_FALSE(rasterizer.measure(static_cast<GlyphId>(font->glyph_count()), o));
+    o.size_px = 0;
+    EXPECT_FALSE(rasterizer.measure(gid, o));
+}
+
+}  // namespace
+}  // namespace bezel
