@@ -67,9 +67,9 @@ Diff diff(ConstMaskView a, ConstMaskView b) {
 
 TEST(GlyphRasterizer, PixelsAgreeWithFreeTypeAtTheSameBox) {
     // FreeType rasterizes the same outline at the box's pen position. Its own curve flattening
-    // errs by up to 16-54/255 (raster_glyph_test), measured here at <= 16 and a mean <= 1.9, so: max <= 20 and mean
-    // <= 3 levels. A box or pen off by one pixel would cost ~255 along every edge and a mean
-    // of tens of levels.
+    // errs by up to 16-54/255 (raster_glyph_test); measured here: max <= 16, mean <= 1.9. So
+    // max <= 20 and mean <= 3 levels. A box or pen off by one pixel would cost ~255 along every
+    // edge and a mean of tens of levels.
     auto font = Font::open(kDejaVu);
     ASSERT_TRUE(font);
     GlyphRasterizer rasterizer(*font);

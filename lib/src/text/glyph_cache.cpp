@@ -1,0 +1,257 @@
+// GlyphCache: rendered glyph bitmaps in slots, found through an open-addressing hash table and
+// ordered by an intrusive least-recently-used list.
+//
+// Memory. `bytes` counts each entry's pixel capacity plus kEntryOverheadBytes (so blank glyphs,
+// which have no pixels, still count and the number of entries is bounded too); inserting evicts
+// from the LRU end until the new entry fits under max_bytes. A glyph larger than max_bytes on its
+// own is not cached: it is rendered into a scratch bitmap that the next get() reuses.
+//
+// No allocation once warm: hits touch only the table and the list; a miss that evicts reuses the
+// last evicted slot's pixel buffer (glyphs of one size are of similar sizes), slots are recycled
+// through a free list, and the table is rehashed only while the number of entries grows.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "bezel/text.hpp"
+
+namespace bezel {
+
+namespace {
+
+constexpr std::size_t kEntryOverheadBytes = 64;
+constexpr std::int32_t kNone = -1;
+
+struct Key {
+    std::uint64_t font_id;
+    std::uint64_t size_bits;       // the double's bit pattern: sizes compare exactly
+    std::uint64_t tolerance_bits;
+    GlyphId gid;
+    std::uint8_t bin_x, bin_y, mode, rule_overlap;
+
+    bool operator==(const Key& o) const {
+        return font_id == o.font_id && size_bits == o.size_bits &&
+               tolerance_bits == o.tolerance_bits && gid == o.gid && bin_x == o.bin_x &&
+               bin_y == o.bin_y && mode == o.mode && rule_overlap == o.rule_overlap;
+    }
+};
+
+std::uint64_t bits(double v) {
+    std::uint64_t b;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+}
+
+// splitmix64's finalizer: a cheap mix whose low bits depend on every input bit.
+std::uint64_t mix(std::uint64_t x) {
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ULL;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+}
+
+std::uint64_t hash_key(const Key& k) {
+    std::uint64_t h = mix(k.font_id ^ 0x9e3779b97f4a7c15ULL);
+    h = mix(h ^ k.size_bits);
+    h = mix(h ^ k.tolerance_bits);
+    return mix(h ^ (std::uint64_t{k.gid} << 32 | std::uint64_t{k.bin_x} << 24 |
+                    std::uint64_t{k.bin_y} << 16 | std::uint64_t{k.mode} << 8 | k.rule_overlap));
+}
+
+// floor(v · bins) for v in [0, 1); anything else (NaN, out of range) → bin 0.
+std::uint8_t bin_of(double v) {
+    if (!(v >= 0.0 && v < 1.0)) return 0;
+    return static_cast<std::uint8_t>(std::min(kSubpixelBins - 1, static_cast<int>(v * kSubpixelBins)));
+}
+
+}  // namespace
+
+struct GlyphCache::Impl {
+    struct Slot {
+        Key key{};
+        CachedGlyph glyph;
+        std::vector<std::uint8_t> pixels;
+        std::int32_t prev = kNone, next = kNone;   // LRU list (head = most recent) or free list
+    };
+
+    std::size_t max_bytes;
+    std::vector<Slot> slots;
+    std::int32_t head = kNone, tail = kNone, free_list = kNone;
+    std::vector<std::int32_t> table;   // slot index or kNone; size a power of two, load ≤ 1/2
+    GlyphCacheStats stats;
+    std::vector<std::uint8_t> oversized;   // scratch for a glyph larger than max_bytes
+    CachedGlyph oversized_glyph;
+
+    explicit Impl(std::size_t max) : max_bytes(max) {}
+
+    std::size_t slot_bytes(const Slot& s) const { return s.pixels.capacity() + kEntryOverheadBytes; }
+
+    // --- the table: linear probing, backward-shift deletion (no tombstones) ---
+    std::size_t mask() const { return table.size() - 1; }
+    std::size_t find_pos(const Key& k) const {
+        if (table.empty()) return SIZE_MAX;
+        for (std::size_t i = hash_key(k) & mask();; i = (i + 1) & mask()) {
+            if (table[i] == kNone) return SIZE_MAX;
+            if (slots[static_cast<std::size_t>(table[i])].key == k) return i;
+        }
+    }
+    void table_insert(std::int32_t slot) {
+        if ((stats.entries + 1) * 2 > table.size()) rehash(std::max<std::size_t>(64, table.size() * 2));
+        std::size_t i = hash_key(slots[static_cast<std::size_t>(slot)].key) & mask();
+        while (table[i] != kNone) i = (i + 1) & mask();
+        table[i] = slot;
+    }
+    void table_erase(std::size_t pos) {
+        // Shift later members of the probe run back so that no lookup meets a false hole.
+        std::size_t hole = pos;
+        for (std::size_t i = (pos + 1) & mask(); table[i] != kNone; i = (i + 1) & mask()) {
+            std::size_t home = hash_key(slots[static_cast<std::size_t>(table[i])].key) & mask();
+            // Movable iff its home is not cyclically within (hole, i].
+            bool in_between = hole <= i ? (home > hole && home <= i) : (home > hole || home <= i);
+            if (!in_between) {
+                table[hole] = table[i];
+                hole = i;
+            }
+        }
+        table[hole] = kNone;
+    }
+    void rehash(std::size_t size) {
+        std::vector<std::int32_t> old = std::move(table);
+        table.assign(size, kNone);
+        for (std::int32_t s : old) {
+            if (s == kNone) continue;
+            std::size_t i = hash_key(slots[static_cast<std::size_t>(s)].key) & mask();
+            while (table[i] != kNone) i = (i + 1) & mask();
+            table[i] = s;
+        }
+    }
+
+    // --- the LRU list ---
+    Slot& at(std::int32_t s) { return slots[static_cast<std::size_t>(s)]; }
+    void unlink(std::int32_t s) {
+        Slot& e = at(s);
+        (e.prev == kNone ? head : at(e.prev).next) = e.next;
+        (e.next == kNone ? tail : at(e.next).prev) = e.prev;
+        e.prev = e.next = kNone;
+    }
+    void push_front(std::int32_t s) {
+        Slot& e = at(s);
+        e.prev = kNone;
+        e.next = head;
+        (head == kNone ? tail : at(head).prev) = s;
+        head = s;
+    }
+
+    // Removes the least recently used entry; returns its slot (pixels kept, not on any list).
+    std::int32_t evict_tail() {
+        std::int32_t s = tail;
+        unlink(s);
+        table_erase(find_pos(at(s).key));
+        stats.bytes -= slot_bytes(at(s));
+        --stats.entries;
+        ++stats.evictions;
+        return s;
+    }
+    void release(std::int32_t s) {
+        std::vector<std::uint8_t>().swap(at(s).pixels);
+        at(s).next = free_list;
+        free_list = s;
+    }
+};
+
+GlyphCache::GlyphCache(std::size_t max_bytes) : impl_(std::make_unique<Impl>(max_bytes)) {}
+GlyphCache::GlyphCache(GlyphCache&&) noexcept = default;
+GlyphCache& GlyphCache::operator=(GlyphCache&&) noexcept = default;
+GlyphCache::~GlyphCache() = default;
+
+std::size_t GlyphCache::max_bytes() const { return impl_->max_bytes; }
+GlyphCacheStats GlyphCache::stats() const { return impl_->stats; }
+
+void GlyphCache::clear() {
+    std::size_t max = impl_->max_bytes;
+    GlyphCacheStats kept = impl_->stats;
+    impl_ = std::make_unique<Impl>(max);
+    impl_->stats.hits = kept.hits;
+    impl_->stats.misses = kept.misses;
+    impl_->stats.evictions = kept.evictions;
+}
+
+Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::uint64_t font_id,
+                                             GlyphId gid, const GlyphRenderOptions& options) {
+    Impl& c = *impl_;
+    GlyphRenderOptions o = options;
+    const std::uint8_t bx = bin_of(options.subpixel_x), by = bin_of(options.subpixel_y);
+    o.subpixel_x = static_cast<double>(bx) / kSubpixelBins;
+    o.subpixel_y = static_cast<double>(by) / kSubpixelBins;
+    const Key key{font_id,
+                  bits(o.size_px),
+                  bits(o.tolerance_px),
+                  gid,
+                  bx,
+                  by,
+                  static_cast<std::uint8_t>(o.mode),
+                  static_cast<std::uint8_t>(static_cast<int>(o.rule) << 4 | static_cast<int>(o.overlap))};
+
+    if (std::size_t pos = c.find_pos(key); pos != SIZE_MAX) {
+        std::int32_t s = c.table[pos];
+        if (s != c.head) {
+            c.unlink(s);
+            c.push_front(s);
+        }
+        ++c.stats.hits;
+        return &c.at(s).glyph;
+    }
+    ++c.stats.misses;
+
+    auto box = rasterizer.measure(gid, o);
+    if (!box) return box.error();
+    const int row_bytes = box->width * (o.mode == RenderMode::Gray ? 1 : 3);
+    const std::size_t need = static_cast<std::size_t>(row_bytes) * static_cast<std::size_t>(box->height);
+
+    if (need + kEntryOverheadBytes > c.max_bytes) {
+        c.oversized.resize(need);
+        MaskView view{c.oversized.data(), row_bytes, box->height, row_bytes};
+        auto drawn = rasterizer.render(gid, o, view);
+        if (!drawn) return drawn.error();
+        c.oversized_glyph = {*drawn, ConstMaskView(view)};
+        return &c.oversized_glyph;
+    }
+
+    // Make room; keep the last evicted slot (and its buffer) for the new glyph.
+    std::int32_t s = kNone;
+    while (c.stats.entries > 0 && c.stats.bytes + need + kEntryOverheadBytes > c.max_bytes) {
+        if (s != kNone) c.release(s);
+        s = c.evict_tail();
+    }
+    if (s == kNone) {
+        if (c.free_list != kNone) {
+            s = c.free_list;
+            c.free_list = c.at(s).next;
+        } else {
+            s = static_cast<std::int32_t>(c.slots.size());
+            c.slots.emplace_back();
+        }
+    }
+    Impl::Slot& slot = c.at(s);
+    slot.pixels.resize(need);
+    if (slot.pixels.capacity() + kEntryOverheadBytes + c.stats.bytes > c.max_bytes)
+        slot.pixels.shrink_to_fit();   // a reused buffer much larger than needed
+    MaskView view{slot.pixels.data(), row_bytes, box->height, row_bytes};
+    auto drawn = rasterizer.render(gid, o, view);
+    if (!drawn) {
+        c.release(s);
+        return drawn.error();
+    }
+    slot.key = key;
+    slot.glyph = {*drawn, ConstMaskView(view)};
+    c.table_insert(s);
+    c.push_front(s);
+    c.stats.bytes += c.slot_bytes(slot);
+    ++c.stats.entries;
+    return &slot.glyph;
+}
+
+}  // namespace bezel

@@ -1,0 +1,195 @@
+// GlyphCache: hits and misses for repeated text, LRU eviction, the memory bound under many sizes,
+// oversized glyphs, bitmaps equal to direct renders, and no allocation once warm.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bezel/text.hpp"
+
+// Counts global allocations so the no-allocation promise can be checked.
+namespace {
+std::atomic<long> g_allocations{0};
+}  // namespace
+void* operator new(std::size_t n) {
+    g_allocations.fetch_add(1, std::memory_order_relaxed);
+    if (void* p = std::malloc(n ? n : 1)) return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace bezel {
+namespace {
+
+const std::string kDejaVu = BEZEL_FONTS_DIR "/dejavu-sans/DejaVuSans.ttf";
+
+struct Fixture {
+    Font font = std::move(Font::open(kDejaVu).value());
+    GlyphRasterizer rasterizer{font};
+
+    GlyphId gid(char32_t c) const { return font.glyph_for_char(c).value(); }
+};
+
+TEST(GlyphCache, RepeatedStringMissesOncePerGlyphAndBin) {
+    Fixture f;
+    GlyphCache cache;
+    const std::u32string text = U"hello, hello world";
+    GlyphRenderOptions o;
+    o.size_px = 16;
+    std::set<std::pair<GlyphId, int>> distinct;
+    for (int pass = 0; pass < 3; ++pass) {
+        double pen = 0;
+        for (char32_t c : text) {
+            double frac = pen - static_cast<int>(pen);
+            o.subpixel_x = frac;
+            distinct.insert({f.gid(c), static_cast<int>(frac * kSubpixelBins)});
+            ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(c), o));
+            pen += 7.3;
+        }
+    }
+    GlyphCacheStats s = cache.stats();
+    EXPECT_EQ(s.misses, distinct.size());
+    EXPECT_EQ(s.hits, 3 * text.size() - distinct.size());
+    EXPECT_EQ(s.entries, distinct.size());
+    EXPECT_EQ(s.evictions, 0u);
+    // The font id, size and mode are part of the key.
+    o.subpixel_x = 0;
+    ASSERT_TRUE(cache.get(f.rasterizer, 2, f.gid(U'h'), o));
+    o.size_px = 17;
+    ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(U'h'), o));
+    o.mode = RenderMode::LcdRgb;
+    ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(U'h'), o));
+    EXPECT_EQ(cache.stats().misses, distinct.size() + 3);
+}
+
+TEST(GlyphCache, SubpixelOffsetsShareFourBins) {
+    Fixture f;
+    GlyphCache cache;
+    GlyphRenderOptions o;
+    for (double sx : {0.0, 0.1, 0.24, 0.25, 0.49, 0.5, 0.74, 0.75, 0.99}) {
+        o.subpixel_x = sx;
+        ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(U'x'), o));
+    }
+    EXPECT_EQ(cache.stats().misses, 4u);
+    EXPECT_EQ(cache.stats().hits, 5u);
+}
+
+TEST(GlyphCache, BitmapEqualsADirectRenderAtTheBinOffset) {
+    Fixture f;
+    GlyphCache cache;
+    for (RenderMode mode : {RenderMode::Gray, RenderMode::LcdBgr}) {
+        GlyphRenderOptions o;
+        o.size_px = 21;
+        o.mode = mode;
+        o.subpixel_x = 0.6;   // bin 2: rendered at +0.5
+        auto cached = cache.get(f.rasterizer, 1, f.gid(U'&'), o);
+        ASSERT_TRUE(cached) << cached.error().message;
+        o.subpixel_x = 0.5;
+        auto box = f.rasterizer.measure(f.gid(U'&'), o);
+        ASSERT_TRUE(box);
+        int bpp = mode == RenderMode::Gray ? 1 : 3;
+        Mask direct(box->width * bpp, box->height);
+        ASSERT_TRUE(f.rasterizer.render(f.gid(U'&'), o, direct.view()));
+        const CachedGlyph& g = **cached;
+        EXPECT_EQ(g.box.left, box->left);
+        EXPECT_EQ(g.box.top, box->top);
+        EXPECT_EQ(g.box.advance, box->advance);
+        EXPECT_EQ(to_mask(g.mask), direct);
+    }
+}
+
+TEST(GlyphCache, EvictsTheLeastRecentlyUsed) {
+    Fixture f;
+    GlyphRenderOptions o;
+    o.size_px = 30;
+    // 'o', 'n' and 'c' are of similar size: room for two and a half of 'o' holds any two of
+    // them, not three.
+    std::size_t one = 0;
+    {
+        GlyphCache probe;
+        ASSERT_TRUE(probe.get(f.rasterizer, 1, f.gid(U'o'), o));
+        one = probe.stats().bytes;
+    }
+    GlyphCache cache(2 * one + one / 2);
+    auto get = [&](char32_t c) { ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(c), o)); };
+    get(U'o');
+    get(U'n');
+    get(U'o');   // 'o' is now the most recent
+    get(U'c');   // evicts 'n'
+    std::size_t misses = cache.stats().misses;
+    get(U'o');
+    EXPECT_EQ(cache.stats().misses, misses) << "'o' was recently used and must still be cached";
+    get(U'n');
+    EXPECT_EQ(cache.stats().misses, misses + 1) << "'n' was the least recently used";
+    EXPECT_LE(cache.stats().bytes, cache.max_bytes());
+    EXPECT_GE(cache.stats().evictions, 1u);
+}
+
+TEST(GlyphCache, StaysWithinItsBoundAcrossManySizes) {
+    Fixture f;
+    GlyphCache cache(64 * 1024);
+    GlyphRenderOptions o;
+    std::size_t peak = 0;
+    for (double size = 6; size <= 120; size += 3) {
+        o.size_px = size;
+        for (char32_t c = U'a'; c <= U'z'; ++c) {
+            auto g = cache.get(f.rasterizer, 1, f.gid(c), o);
+            ASSERT_TRUE(g) << g.error().message;
+            ASSERT_GT((*g)->box.width, 0);
+            peak = std::max(peak, cache.stats().bytes);
+        }
+    }
+    EXPECT_LE(peak, cache.max_bytes());
+    EXPECT_GT(peak, cache.max_bytes() / 2);
+    EXPECT_GT(cache.stats().evictions, 100u);
+    cache.clear();
+    EXPECT_EQ(cache.stats().bytes, 0u);
+    EXPECT_EQ(cache.stats().entries, 0u);
+}
+
+TEST(GlyphCache, GlyphLargerThanTheBoundIsRenderedButNotKept) {
+    Fixture f;
+    GlyphCache cache(1000);
+    GlyphRenderOptions o;
+    o.size_px = 100;
+    auto g = cache.get(f.rasterizer, 1, f.gid(U'W'), o);
+    ASSERT_TRUE(g);
+    EXPECT_GT(static_cast<std::size_t>((*g)->mask.width * (*g)->mask.height), cache.max_bytes());
+    EXPECT_EQ(cache.stats().entries, 0u);
+    EXPECT_LE(cache.stats().bytes, cache.max_bytes());
+}
+
+TEST(GlyphCache, ErrorsPassThroughAndCacheNothing) {
+    Fixture f;
+    GlyphCache cache;
+    GlyphRenderOptions o;
+    auto g = cache.get(f.rasterizer, 1, static_cast<GlyphId>(f.font.glyph_count() + 5), o);
+    ASSERT_FALSE(g);
+    EXPECT_NE(g.error().message.find(std::to_string(f.font.glyph_count() + 5)), std::string::npos);
+    EXPECT_EQ(cache.stats().entries, 0u);
+}
+
+TEST(GlyphCache, HitsAllocateNothing) {
+    Fixture f;
+    GlyphCache cache;
+    GlyphRenderOptions o;
+    const std::u32string text = U"The quick brown fox jumps over the lazy dog";
+    for (char32_t c : text) ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(c), o));
+    std::vector<GlyphId> gids;
+    for (char32_t c : text) gids.push_back(f.gid(c));
+    long before = g_allocations.load();
+    std::size_t found = 0;
+    for (int pass = 0; pass < 5; ++pass)
+        for (GlyphId gid : gids) found += cache.get(f.rasterizer, 1, gid, o).ok();
+    EXPECT_EQ(g_allocations.load() - before, 0);
+    EXPECT_EQ(found, 5 * gids.size());
+}
+
+}  // namespace
+}  // namespace bezel
