@@ -167,14 +167,18 @@ void fill_region_exact(const Path& path, const Affine& transform, FillRule rule,
         }
         const std::size_t k = s.active.size();
         if (work + k * k / 2 > kMaxOverlapWork) return;  // the rest keeps the plain coverage
-        work += row_events(s, top, s.events);
-
+        if (k * k / 2 > kMaxOverlapRowWork) continue;    // so does this row
+        std::size_t row_work = row_events(s, top, s.events);
+        bool exact = true;
         for (std::size_t i = 0; i + 1 < s.events.size(); ++i) {
             const double y0 = s.events[i], y1 = s.events[i + 1];
             if (!(y1 > y0)) continue;
             const double ym = 0.5 * (y0 + y1);
-            work += k;
-            if (work > kMaxOverlapWork) return;  // this row keeps its plain coverage too
+            row_work += k;
+            if (row_work > kMaxOverlapRowWork) {
+                exact = false;
+                break;
+            }
             s.slab.clear();
             for (std::uint32_t a : s.active) {
                 const UnionEdge& e = s.edges[a];
@@ -192,7 +196,8 @@ void fill_region_exact(const Path& path, const Affine& transform, FillRule rule,
                 add_piece(s.cells.data(), W, e.x_at(y0), e.x_at(y1), dy);
             }
         }
-        write_row(s.cells.data(), W, target.row(r));
+        work += row_work;
+        if (exact) write_row(s.cells.data(), W, target.row(r));
         std::fill(s.cells.begin(), s.cells.end(), 0.0);
     }
 }

@@ -21,10 +21,10 @@
 // Measured against the 16×16 supersampled reference, it matches the plain rasterizer's error on
 // non-overlapping outlines (tests/raster_overlap_test.cpp, README).
 //
-// Cost: per row, O(k²) crossing tests for k edges active in it, then O(k log k) per slab. Total
-// work is bounded by kMaxOverlapWork (below); past it the remaining rows keep the plain
-// accumulation the caller has already written (so hostile input degrades to
-// OverlapMode::Accumulate instead of running away).
+// Cost: per row, O(k²) crossing tests for k edges active in it, then O(k log k) per slab. Two
+// walls bound it (below); a row past the first, and every row once the second is reached, keeps
+// the plain accumulation the caller has already written — hostile input degrades to
+// OverlapMode::Accumulate in those rows instead of running away.
 #pragma once
 
 #include <cstddef>
@@ -37,9 +37,13 @@
 
 namespace bezel::raster_detail {
 
-// Edge visits (crossing tests plus edges swept per slab) one accurate fill may make: 2^26, about
-// 0.1–0.3 s. The most complex glyph of DejaVu Sans at 512 px takes about 1/100 of it.
-inline constexpr std::size_t kMaxOverlapWork = std::size_t{1} << 26;
+// Edge visits (pairs tested for a crossing, plus edges swept per slab) one ROW may take: 2^16,
+// e.g. ~360 edges active in one row. Real glyphs stay far below: a pixel row of a complex CJK
+// glyph at 12 px meets ~80 flattened edges, and at 512 px ~60 (longer edges, as many crossings).
+inline constexpr std::size_t kMaxOverlapRowWork = std::size_t{1} << 16;
+// Edge visits one accurate fill may take in all: 2^28, about a second. A glyph at 512 px takes
+// under 1/100 of it.
+inline constexpr std::size_t kMaxOverlapWork = std::size_t{1} << 28;
 
 // One non-horizontal polygon edge, top end first (y down).
 struct UnionEdge {
