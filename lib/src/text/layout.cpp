@@ -1,0 +1,344 @@
+// layout_text: paragraphs, script/direction runs, greedy line wrapping, alignment.
+//
+// Per paragraph (text between newlines): the paragraph's level is resolved and the text itemized
+// into runs of one script and one bidi level (script_runs.hpp); each run is shaped once, which
+// gives every cluster its advance. Lines are then filled greedily in logical order: a line
+// takes text up to the last break opportunity (layout_breaks.hpp) whose text, without trailing
+// spaces, fits width_px; a word with no opportunity that is wider than the line is cut at the
+// last cluster boundary that fits (at least one cluster per line). Each line's glyphs are the
+// slices of the paragraph's shaped runs that fall on it — reshaped only where a line cuts a run
+// inside a word, where shaping across the cut (joining, kerning) no longer applies — ordered by
+// the runs' levels (L2) and placed along the baseline.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "bezel/text.hpp"
+#include "text/layout_breaks.hpp"
+#include "text/script_runs.hpp"
+#include "text/shape_tags.hpp"
+#include "text/utf8_decode.hpp"
+
+namespace bezel {
+
+using namespace text_detail;
+
+namespace {
+
+// Slack when comparing a line's width with width_px: sums of advances in a different order
+// must not flip a fit that is exact on paper.
+constexpr double kFitSlackPx = 1e-6;
+
+bool is_newline(char32_t c) {
+    return c == '\n' || c == '\r' || c == 0x0B || c == 0x0C || c == 0x85 || c == 0x2028 ||
+           c == 0x2029;
+}
+
+Status check_length(const char* name, double v) {
+    if (std::isfinite(v) && v >= 0) return ok_status();
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return Error{std::string("layout ") + name + " " + buf + ": must be a finite number >= 0"};
+}
+
+struct LineSpan {
+    std::size_t begin = 0, end = 0;   // paragraph-relative code point indices
+    bool soft_end = false;            // ended by wrapping (trailing spaces hang)
+    bool forced_begin = false, forced_end = false;   // cut inside a word
+};
+
+struct Piece {
+    std::size_t first = 0, count = 0;   // in the line's glyph pool
+};
+
+// Everything one paragraph needs; members are reused across paragraphs.
+class ParagraphLayout {
+public:
+    ParagraphLayout(Shaper& shaper, const ShapeOptions& shape, std::string_view text,
+                    const std::vector<CodePoint>& cps)
+        : shaper_(shaper), shape_(shape), text_(text), cps_(cps) {}
+
+    // Lays out cps[begin, end) as lines appended to `out`: glyph x relative to the line's start,
+    // y relative to its baseline; placement on the page comes after all lines are known.
+    Status run(std::size_t begin, std::size_t end, int level, double width_px, TextLayout& out);
+
+private:
+    std::uint32_t offset(std::size_t i) const {
+        return i < cps_.size() ? cps_[i].offset : static_cast<std::uint32_t>(text_.size());
+    }
+    Status shape_range(std::size_t a, std::size_t b, const ScriptRun& run, ShapedRun& into);
+    Status wrap(std::size_t m, double width_px);
+    // The width `line` will have once placed: its runs' advances, reshaped where it cuts a run
+    // inside a word (a joining or kerning change there changes the width).
+    Expected<double> placed_width(const LineSpan& line);
+    bool cut_in_word(const LineSpan& line, std::size_t glyph_end, std::size_t a, std::size_t b,
+                     const ScriptRun& run) const {
+        const std::size_t rb = run.begin - base_, re = run.end - base_;
+        if (a == rb && b == re) return false;
+        return (a == line.begin && a != rb && line.forced_begin) ||
+               (b == glyph_end && b != re && line.forced_end);
+    }
+    std::size_t trimmed(std::size_t a, std::size_t b) const {
+        while (b > a && is_break_space(cps_[base_ + b - 1].cp)) --b;
+        return b;
+    }
+    bool fits(std::size_t a, std::size_t b, double width_px) const {
+        return prefix_[trimmed(a, b)] - prefix_[a] <= width_px + kFitSlackPx;
+    }
+    Status place_line(const LineSpan& line, TextLayout& out);
+
+    Shaper& shaper_;
+    const ShapeOptions& shape_;
+    std::string_view text_;
+    const std::vector<CodePoint>& cps_;
+    std::size_t base_ = 0;
+    std::vector<ScriptRun> runs_;
+    std::vector<ShapedRun> shaped_;
+    std::vector<std::uint8_t> scratch_, breaks_, boundary_;
+    std::vector<double> prefix_;
+    std::vector<LineSpan> lines_;
+    std::vector<ShapedGlyph> pool_;
+    std::vector<Piece> pieces_;
+    std::vector<std::uint8_t> levels_;
+    std::vector<std::size_t> order_;
+    ShapedRun reshaped_;
+};
+
+Status ParagraphLayout::shape_range(std::size_t a, std::size_t b, const ScriptRun& run,
+                                    ShapedRun& into) {
+    ShapeOptions opts = shape_;
+    opts.direction = (run.level & 1) != 0 ? Direction::RightToLeft : Direction::LeftToRight;
+    opts.script = tag_string(hb_script_to_iso15924_tag(run.script));
+    const std::uint32_t from = offset(a), to = offset(b);
+    auto shaped = shaper_.shape(text_.substr(from, to - from), opts);
+    if (!shaped) return shaped.error();
+    into = std::move(*shaped);
+    for (ShapedGlyph& g : into.glyphs) g.cluster += from;
+    return ok_status();
+}
+
+Expected<double> ParagraphLayout::placed_width(const LineSpan& line) {
+    double width = 0;
+    for (const ScriptRun& run : runs_) {
+        const std::size_t a = std::max(run.begin - base_, line.begin);
+        const std::size_t b = std::min(run.end - base_, line.end);
+        if (a >= b) continue;
+        if (cut_in_word(line, line.end, a, b, run)) {
+            if (auto ok = shape_range(base_ + a, base_ + b, run, reshaped_); !ok) return ok.error();
+            width += reshaped_.advance;
+        } else {
+            width += prefix_[b] - prefix_[a];
+        }
+    }
+    return width;
+}
+
+Status ParagraphLayout::wrap(std::size_t m, double width_px) {
+    lines_.clear();
+    if (width_px <= 0 || m == 0) {
+        lines_.push_back({0, m, false, false, false});
+        return ok_status();
+    }
+    auto next_boundary = [&](std::size_t x) {
+        ++x;
+        while (x < m && boundary_[x] == 0) ++x;
+        return x;
+    };
+    constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+    std::size_t start = 0, candidate = kNone;
+    bool start_forced = false;
+    for (std::size_t k = 1; k <= m;) {
+        if (k < m && breaks_[k] == 0) {
+            ++k;
+            continue;
+        }
+        if (k <= start || fits(start, k, width_px)) {
+            if (k > start) candidate = k;
+            ++k;
+            continue;
+        }
+        if (candidate != kNone) {
+            lines_.push_back({start, candidate, true, start_forced, false});
+            start = candidate;
+            start_forced = false;
+            candidate = kNone;
+            continue;   // the same k again, from the new start
+        }
+        // No opportunity in [start, k) and it does not fit: cut between clusters, at the last
+        // boundary that fits by the paragraph's advances, then back while the reshaped line
+        // does not (at least one cluster stays).
+        const std::size_t first = next_boundary(start);
+        std::size_t q = first;
+        for (std::size_t q2 = next_boundary(q); q2 < k && fits(start, q2, width_px);
+             q2 = next_boundary(q2))
+            q = q2;
+        while (q > first) {
+            auto w = placed_width({start, q, false, start_forced, true});
+            if (!w) return w.error();
+            if (*w <= width_px + kFitSlackPx) break;
+            do --q;
+            while (q > first && boundary_[q] == 0);
+        }
+        lines_.push_back({start, q, false, start_forced, true});
+        start = q;
+        start_forced = true;
+    }
+    if (start < m || lines_.empty()) lines_.push_back({start, m, false, start_forced, false});
+    return ok_status();
+}
+
+Status ParagraphLayout::run(std::size_t begin, std::size_t end, int level, double width_px,
+                            TextLayout& out) {
+    base_ = begin;
+    const std::size_t m = end - begin;
+    itemize(cps_, begin, end, level, runs_, scratch_);
+    shaped_.resize(runs_.size());
+    std::vector<double>& adv = prefix_;
+    adv.assign(m + 1, 0.0);
+    boundary_.assign(m, 0);
+    for (std::size_t r = 0; r < runs_.size(); ++r) {
+        if (auto ok = shape_range(runs_[r].begin, runs_[r].end, runs_[r], shaped_[r]); !ok)
+            return ok;
+        boundary_[runs_[r].begin - begin] = 1;
+        for (const ShapedGlyph& g : shaped_[r].glyphs) {
+            auto it = std::lower_bound(
+                cps_.begin() + static_cast<std::ptrdiff_t>(begin),
+                cps_.begin() + static_cast<std::ptrdiff_t>(end), g.cluster,
+                [](const CodePoint& c, std::uint32_t off) { return c.offset < off; });
+            const auto k = static_cast<std::size_t>(it - cps_.begin()) - begin;
+            if (k >= m) continue;
+            adv[k + 1] += g.x_advance;
+            boundary_[k] = 1;
+        }
+    }
+    for (std::size_t k = 0; k < m; ++k) prefix_[k + 1] += prefix_[k];   // now prefix sums
+    break_opportunities(cps_, begin, end, breaks_);
+    if (auto ok = wrap(m, width_px); !ok) return ok;
+    for (const LineSpan& line : lines_)
+        if (auto ok = place_line(line, out); !ok) return ok;
+    return ok_status();
+}
+
+Status ParagraphLayout::place_line(const LineSpan& line, TextLayout& out) {
+    const std::size_t glyph_end = line.soft_end ? trimmed(line.begin, line.end) : line.end;
+    pool_.clear();
+    pieces_.clear();
+    levels_.clear();
+    for (std::size_t r = 0; r < runs_.size(); ++r) {
+        const ScriptRun& run = runs_[r];
+        const std::size_t rb = run.begin - base_, re = run.end - base_;
+        const std::size_t a = std::max(rb, line.begin), b = std::min(re, glyph_end);
+        if (a >= b) continue;
+        Piece piece{pool_.size(), 0};
+        if (cut_in_word(line, glyph_end, a, b, run)) {
+            if (auto ok = shape_range(base_ + a, base_ + b, run, reshaped_); !ok) return ok;
+            pool_.insert(pool_.end(), reshaped_.glyphs.begin(), reshaped_.glyphs.end());
+        } else {
+            const std::uint32_t from = offset(base_ + a), to = offset(base_ + b);
+            for (const ShapedGlyph& g : shaped_[r].glyphs)
+                if (g.cluster >= from && g.cluster < to) pool_.push_back(g);
+        }
+        piece.count = pool_.size() - piece.first;
+        pieces_.push_back(piece);
+        levels_.push_back(run.level);
+    }
+    visual_order(levels_, order_);
+
+    LaidOutLine laid;
+    laid.first_glyph = out.glyphs.size();
+    laid.text_begin = offset(base_ + line.begin);
+    laid.text_end = offset(base_ + line.end);
+    double pen = 0;
+    for (std::size_t p : order_) {
+        const Piece& piece = pieces_[p];
+        for (std::size_t i = piece.first; i < piece.first + piece.count; ++i) {
+            const ShapedGlyph& g = pool_[i];
+            out.glyphs.push_back({g.gid, pen + g.x_offset, g.y_offset, g.cluster});
+            pen += g.x_advance;
+        }
+    }
+    laid.glyph_count = out.glyphs.size() - laid.first_glyph;
+    laid.width = pen;
+    out.lines.push_back(laid);
+    return ok_status();
+}
+
+}  // namespace
+
+Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
+                                 std::string_view utf8, const ShapeOptions& shape,
+                                 const LayoutOptions& layout) {
+    if (auto ok = check_length("width_px", layout.width_px); !ok) return ok.error();
+    if (auto ok = check_length("margin_px", layout.margin_px); !ok) return ok.error();
+    if (auto ok = check_length("line_height", layout.line_height); !ok) return ok.error();
+    if (shape.direction == Direction::TopToBottom || shape.direction == Direction::BottomToTop)
+        return Error{"layout: vertical text is not supported (direction ttb/btt)"};
+    if (metrics.units_per_em <= 0)
+        return Error{"layout: font metrics with units per em " +
+                     std::to_string(metrics.units_per_em) + " (must be > 0)"};
+    if (utf8.size() > kMaxTextBytes)
+        return Error{"text of " + std::to_string(utf8.size()) + " bytes: longer than the " +
+                     std::to_string(kMaxTextBytes) + " allowed"};
+    // Shaping nothing checks the size, features, variations, script and language once, also
+    // for a text with no characters.
+    if (auto probe = shaper.shape({}, shape); !probe) return probe.error();
+
+    std::vector<CodePoint> cps;
+    cps.reserve(utf8.size());
+    for (std::size_t i = 0; i < utf8.size();) {
+        char32_t cp = 0;
+        const std::size_t n = decode_one(utf8, i, cp);
+        if (n == 0) return invalid_utf8(i);
+        cps.push_back({static_cast<std::uint32_t>(i), cp});
+        i += n;
+    }
+
+    TextLayout out;
+    std::vector<bool> rtl_line;
+    ParagraphLayout paragraph(shaper, shape, utf8, cps);
+    for (std::size_t p = 0;;) {
+        std::size_t q = p;
+        while (q < cps.size() && !is_newline(cps[q].cp)) ++q;
+        int level = shape.direction == Direction::RightToLeft ? 1 : 0;
+        if (shape.direction == Direction::Auto)
+            level = first_strong_direction(cps, p, q) < 0 ? 1 : 0;
+        if (auto ok = paragraph.run(p, q, level, layout.width_px, out); !ok) return ok.error();
+        rtl_line.resize(out.lines.size(), level == 1);
+        if (q == cps.size()) break;
+        p = q + 1;
+        if (cps[q].cp == '\r' && p < cps.size() && cps[p].cp == '\n') ++p;
+    }
+
+    // Vertical metrics: font units → pixels.
+    const double scale = shape.size_px / metrics.units_per_em;
+    const double ascender = metrics.ascender * scale, descender = metrics.descender * scale;
+    const double factor = layout.line_height > 0 ? layout.line_height : 1.0;
+    const double line_advance =
+        (metrics.ascender - metrics.descender + metrics.line_gap) * scale * factor;
+    double widest = 0;
+    for (const LaidOutLine& l : out.lines) widest = std::max(widest, l.width);
+    const double avail = layout.width_px > 0 ? layout.width_px : widest;
+    const double margin = layout.margin_px;
+    for (std::size_t i = 0; i < out.lines.size(); ++i) {
+        LaidOutLine& line = out.lines[i];
+        const double slack = std::max(0.0, avail - line.width);
+        double x0 = 0;
+        switch (layout.align) {
+            case Align::Start: x0 = rtl_line[i] ? slack : 0; break;
+            case Align::Center: x0 = slack / 2; break;
+            case Align::End: x0 = rtl_line[i] ? 0 : slack; break;
+        }
+        line.baseline_y = margin + ascender + static_cast<double>(i) * line_advance;
+        for (std::size_t g = line.first_glyph; g < line.first_glyph + line.glyph_count; ++g) {
+            out.glyphs[g].x += margin + x0;
+            out.glyphs[g].y += line.baseline_y;
+        }
+    }
+    out.width = avail + 2 * margin;
+    out.height = 2 * margin + ascender - descender +
+                 static_cast<double>(out.lines.size() - 1) * line_advance;
+    return out;
+}
+
+}  // namespace bezel

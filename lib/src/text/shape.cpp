@@ -1,0 +1,241 @@
+// Shaper: HarfBuzz shaping of one font file.
+//
+// Scale: HarfBuzz positions are integers in the units of hb_font_set_scale. bezel sets the scale
+// to kUnitsPerPx units per pixel (s = round(size_px · 1024)), so advances and offsets keep 1/1024
+// px of precision, and converts back with size_px / s (exact when size_px·1024 is an integer;
+// otherwise it also undoes the rounding of s). At the largest size (16384 px) s = 2^24 and a
+// glyph several em wide still fits HarfBuzz's 32-bit positions. No ppem is set: outlines are
+// unhinted, and so are advances.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+#include <hb-ot.h>
+#include <hb.h>
+
+#include "bezel/text.hpp"
+#include "text/shape_tags.hpp"
+#include "text/utf8_decode.hpp"
+
+namespace bezel {
+
+using text_detail::parse_language_tag;
+using text_detail::parse_script_tag;
+using text_detail::tag_string;
+
+namespace {
+
+constexpr double kUnitsPerPx = 1024.0;
+
+std::string format_number(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+Status check_font_file(const std::string& file) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(file, ec);
+    if (status.type() == std::filesystem::file_type::not_found) return Error{file + ": no such file"};
+    if (ec) return Error{file + ": " + ec.message()};
+    if (status.type() == std::filesystem::file_type::directory)
+        return Error{file + ": is a directory, not a font file"};
+    if (status.type() != std::filesystem::file_type::regular)
+        return Error{file + ": not a regular file"};
+    return ok_status();
+}
+
+hb_direction_t to_hb(Direction d) {
+    switch (d) {
+        case Direction::LeftToRight: return HB_DIRECTION_LTR;
+        case Direction::RightToLeft: return HB_DIRECTION_RTL;
+        case Direction::TopToBottom: return HB_DIRECTION_TTB;
+        case Direction::BottomToTop: return HB_DIRECTION_BTT;
+        case Direction::Auto: break;
+    }
+    return HB_DIRECTION_INVALID;
+}
+
+Direction from_hb(hb_direction_t d) {
+    switch (d) {
+        case HB_DIRECTION_RTL: return Direction::RightToLeft;
+        case HB_DIRECTION_TTB: return Direction::TopToBottom;
+        case HB_DIRECTION_BTT: return Direction::BottomToTop;
+        default: return Direction::LeftToRight;
+    }
+}
+
+}  // namespace
+
+struct Shaper::Impl {
+    std::string file;
+    hb_blob_t* blob = nullptr;
+    hb_face_t* face = nullptr;
+    hb_font_t* font = nullptr;
+    hb_buffer_t* buffer = nullptr;   // reused by every shape() call
+    std::vector<hb_ot_var_axis_info_t> axes;
+    int scale = 0;                   // the current hb_font_set_scale
+    std::vector<hb_variation_t> applied;   // the variations the font has now
+    std::vector<hb_variation_t> wanted;    // scratch
+    std::vector<hb_feature_t> features;    // scratch
+
+    Impl() = default;
+    Impl(const Impl&) = delete;
+    Impl& operator=(const Impl&) = delete;
+    ~Impl() {
+        hb_buffer_destroy(buffer);
+        hb_font_destroy(font);
+        hb_face_destroy(face);
+        hb_blob_destroy(blob);
+    }
+
+    Status set_variations(const std::vector<VariationSetting>& settings);
+};
+
+Status Shaper::Impl::set_variations(const std::vector<VariationSetting>& settings) {
+    wanted.clear();
+    for (const VariationSetting& s : settings) {
+        const hb_ot_var_axis_info_t* axis = nullptr;
+        for (const auto& a : axes)
+            if (tag_string(a.tag) == s.tag) axis = &a;
+        if (axis == nullptr) {
+            if (axes.empty())
+                return Error{file + ": variation axis '" + s.tag +
+                             "': the font has no variation axes"};
+            return Error{file + ": unknown variation axis '" + s.tag + "'"};
+        }
+        if (!(s.value >= axis->min_value && s.value <= axis->max_value))  // also rejects NaN
+            return Error{file + ": variation " + s.tag + "=" + format_number(s.value) +
+                         " out of range [" + format_number(axis->min_value) + ", " +
+                         format_number(axis->max_value) + "]"};
+        wanted.push_back({axis->tag, static_cast<float>(s.value)});
+    }
+    const bool same = wanted.size() == applied.size() &&
+                      std::equal(wanted.begin(), wanted.end(), applied.begin(),
+                                 [](const hb_variation_t& a, const hb_variation_t& b) {
+                                     return a.tag == b.tag && a.value == b.value;
+                                 });
+    if (same) return ok_status();
+    // Later settings of the same tag win, as in hb_font_set_variations.
+    hb_font_set_variations(font, wanted.data(), static_cast<unsigned>(wanted.size()));
+    applied = wanted;
+    return ok_status();
+}
+
+Shaper::Shaper(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Shaper::Shaper(Shaper&&) noexcept = default;
+Shaper& Shaper::operator=(Shaper&&) noexcept = default;
+Shaper::~Shaper() = default;
+
+Expected<Shaper> Shaper::open(const std::string& file, int face_index) {
+    if (auto ok = check_font_file(file); !ok) return ok.error();
+    auto impl = std::make_unique<Impl>();
+    impl->file = file;
+    impl->blob = hb_blob_create_from_file_or_fail(file.c_str());
+    if (impl->blob == nullptr) return Error{file + ": cannot read the file"};
+    const unsigned count = hb_face_count(impl->blob);
+    if (count == 0) return Error{file + ": not an OpenType or TrueType font"};
+    if (face_index < 0 || static_cast<unsigned>(face_index) >= count)
+        return Error{file + ": face index " + std::to_string(face_index) + " out of range (0.." +
+                     std::to_string(count - 1) + ")"};
+    impl->face = hb_face_create(impl->blob, static_cast<unsigned>(face_index));
+    if (hb_face_get_glyph_count(impl->face) == 0)
+        return Error{file + ": face " + std::to_string(face_index) + " has no glyphs"};
+    impl->font = hb_font_create(impl->face);
+    impl->buffer = hb_buffer_create();
+    if (!hb_buffer_allocation_successful(impl->buffer))
+        return Error{file + ": cannot allocate a shaping buffer"};
+    unsigned n_axes = hb_ot_var_get_axis_count(impl->face);
+    impl->axes.resize(n_axes);
+    hb_ot_var_get_axis_infos(impl->face, 0, &n_axes, impl->axes.data());
+    impl->axes.resize(n_axes);
+    return Shaper(std::move(impl));
+}
+
+Expected<ShapedRun> Shaper::shape(std::string_view utf8, const ShapeOptions& options) {
+    Impl& im = *impl_;
+    if (!(options.size_px > 0 && options.size_px <= kMaxFontSizePx))
+        return Error{"font size " + format_number(options.size_px) + " px: out of range (0, " +
+                     format_number(kMaxFontSizePx) + "]"};
+    if (utf8.size() > kMaxTextBytes)
+        return Error{"text of " + std::to_string(utf8.size()) + " bytes: longer than the " +
+                     std::to_string(kMaxTextBytes) + " allowed"};
+    for (std::size_t i = 0; i < utf8.size();) {
+        char32_t cp;
+        const std::size_t n = text_detail::decode_one(utf8, i, cp);
+        if (n == 0) return text_detail::invalid_utf8(i);
+        i += n;
+    }
+    hb_script_t script = HB_SCRIPT_INVALID;
+    if (!options.script.empty()) {
+        auto s = parse_script_tag(options.script);
+        if (!s) return s.error();
+        script = *s;
+    }
+    hb_language_t language = nullptr;
+    if (!options.language.empty()) {
+        auto l = parse_language_tag(options.language);
+        if (!l) return l.error();
+        language = *l;
+    }
+    if (auto ok = im.set_variations(options.variations); !ok) return ok.error();
+
+    im.features.clear();
+    for (const FeatureSetting& f : options.features) {
+        if (f.tag.empty() || f.tag.size() > 4)
+            return Error{"feature '" + f.tag + "': the tag must have 1 to 4 characters"};
+        hb_feature_t hf;
+        hf.tag = hb_tag_from_string(f.tag.data(), static_cast<int>(f.tag.size()));
+        hf.value = f.value;
+        hf.start = f.start >= HB_FEATURE_GLOBAL_END ? HB_FEATURE_GLOBAL_END
+                                                    : static_cast<unsigned>(f.start);
+        hf.end = f.end >= HB_FEATURE_GLOBAL_END ? HB_FEATURE_GLOBAL_END
+                                                : static_cast<unsigned>(f.end);
+        im.features.push_back(hf);
+    }
+
+    const int scale = static_cast<int>(std::lround(options.size_px * kUnitsPerPx));
+    if (scale != im.scale) {
+        hb_font_set_scale(im.font, scale, scale);
+        im.scale = scale;
+    }
+    const double px_per_unit = options.size_px / scale;
+
+    hb_buffer_t* buf = im.buffer;
+    hb_buffer_clear_contents(buf);
+    hb_buffer_add_utf8(buf, utf8.data(), static_cast<int>(utf8.size()), 0,
+                       static_cast<int>(utf8.size()));
+    if (options.direction != Direction::Auto) hb_buffer_set_direction(buf, to_hb(options.direction));
+    if (script != HB_SCRIPT_INVALID) hb_buffer_set_script(buf, script);
+    if (language != nullptr) hb_buffer_set_language(buf, language);
+    hb_buffer_guess_segment_properties(buf);
+    hb_shape(im.font, buf, im.features.data(), static_cast<unsigned>(im.features.size()));
+    if (!hb_buffer_allocation_successful(buf))
+        return Error{im.file + ": out of memory while shaping " + std::to_string(utf8.size()) +
+                     " bytes of text"};
+
+    unsigned n = 0;
+    const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buf, &n);
+    const hb_glyph_position_t* pos = hb_buffer_get_glyph_positions(buf, &n);
+    ShapedRun run;
+    const hb_direction_t dir = hb_buffer_get_direction(buf);
+    run.direction = from_hb(dir);
+    run.script = tag_string(hb_script_to_iso15924_tag(hb_buffer_get_script(buf)));
+    run.glyphs.resize(n);
+    for (unsigned i = 0; i < n; ++i) {
+        ShapedGlyph& g = run.glyphs[i];
+        g.gid = info[i].codepoint;
+        g.cluster = info[i].cluster;
+        // HarfBuzz's y axis points up; bezel's down.
+        g.x_advance = pos[i].x_advance * px_per_unit;
+        g.y_advance = -pos[i].y_advance * px_per_unit;
+        g.x_offset = pos[i].x_offset * px_per_unit;
+        g.y_offset = -pos[i].y_offset * px_per_unit;
+        run.advance += HB_DIRECTION_IS_HORIZONTAL(dir) ? g.x_advance : g.y_advance;
+    }
+    return run;
+}
+
+}  // namespace bezel
