@@ -1,0 +1,125 @@
+// TextRenderer: layout_text, then every placed glyph from the cache blended onto the page.
+//
+// Placement. A pen x is rounded to the nearest 1/kSubpixelBins of a pixel and split into an
+// integer column and a bin (so the cache's floor-quantization sees an exact bin and the error is
+// at most 1/8 px); a pen y is rounded to a whole pixel, so every glyph of a line shares one
+// baseline row and horizontal stems stay crisp.
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "bezel/text.hpp"
+
+namespace bezel {
+
+namespace {
+
+// Most pixels of one rendered page: 64 Mpx (256 MiB of RGBA), well past a poster of text, short
+// of what kMaxImageDim alone would allow (4 GiB).
+constexpr double kMaxPagePixels = double{1 << 26};
+
+// A font id for the cache: the same for equal variation settings, so switching back and forth
+// between instances keeps both in the cache.
+std::uint64_t font_id_of(const std::vector<VariationSetting>& variations) {
+    std::uint64_t h = 0xcbf29ce484222325ULL;   // FNV-1a over tags and values' bits
+    auto eat = [&h](const void* p, std::size_t n) {
+        const auto* b = static_cast<const unsigned char*>(p);
+        for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 0x100000001b3ULL;
+    };
+    for (const VariationSetting& v : variations) {
+        eat(v.tag.data(), v.tag.size());
+        eat(&v.value, sizeof v.value);
+    }
+    return h;
+}
+
+bool same_variations(const std::vector<VariationSetting>& a, const std::vector<VariationSetting>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].tag != b[i].tag || a[i].value != b[i].value) return false;
+    return true;
+}
+
+}  // namespace
+
+struct TextRenderer::Impl {
+    Font font;
+    Shaper shaper;
+    GlyphRasterizer rasterizer;   // borrows `font`: Impl lives on the heap and does not move
+    GlyphCache cache;
+    std::vector<VariationSetting> variations;
+    std::uint64_t font_id;
+
+    Impl(Font f, Shaper s, std::size_t cache_bytes)
+        : font(std::move(f)), shaper(std::move(s)), rasterizer(font), cache(cache_bytes),
+          font_id(font_id_of({})) {}
+};
+
+TextRenderer::TextRenderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+TextRenderer::TextRenderer(TextRenderer&&) noexcept = default;
+TextRenderer& TextRenderer::operator=(TextRenderer&&) noexcept = default;
+TextRenderer::~TextRenderer() = default;
+
+Expected<TextRenderer> TextRenderer::open(const std::string& file, int face_index,
+                                          std::size_t cache_bytes) {
+    auto font = Font::open(file, face_index);
+    if (!font) return font.error();
+    auto shaper = Shaper::open(file, face_index);
+    if (!shaper) return shaper.error();
+    return TextRenderer(std::make_unique<Impl>(std::move(*font), std::move(*shaper), cache_bytes));
+}
+
+Font& TextRenderer::font() { return impl_->font; }
+Shaper& TextRenderer::shaper() { return impl_->shaper; }
+GlyphCache& TextRenderer::cache() { return impl_->cache; }
+
+Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOptions& options) {
+    Impl& r = *impl_;
+    if (!same_variations(options.shape.variations, r.variations)) {
+        if (auto set = r.font.set_variations(options.shape.variations); !set) {
+            const std::string& m = set.error().message;
+            return m.find(r.font.file()) == std::string::npos ? Error{r.font.file() + ": " + m}
+                                                              : set.error();
+        }
+        r.variations = options.shape.variations;
+        r.font_id = font_id_of(r.variations);
+    }
+    auto layout = layout_text(r.shaper, r.font.metrics(), utf8, options.shape, options.layout);
+    if (!layout) return layout.error();
+
+    const double w = std::ceil(layout->width), h = std::ceil(layout->height);
+    if (!(w <= kMaxImageDim && h <= kMaxImageDim && w * h <= kMaxPagePixels))
+        return Error{"text page of " + std::to_string(w) + "x" + std::to_string(h) +
+                     " px is too large (at most " + std::to_string(kMaxImageDim) + " px a side, " +
+                     std::to_string(static_cast<long>(kMaxPagePixels)) + " px in all)"};
+    // A page is at least one pixel: empty text still gives a (background) image.
+    Image page(std::max(1, static_cast<int>(w)), std::max(1, static_cast<int>(h)),
+               options.background);
+
+    GlyphRenderOptions glyph;
+    glyph.size_px = options.shape.size_px;
+    glyph.mode = options.mode;
+    for (const PlacedGlyph& g : layout->glyphs) {
+        const double quarters = std::floor(g.x * kSubpixelBins + 0.5);
+        const double column = std::floor(quarters / kSubpixelBins);
+        glyph.subpixel_x = (quarters - column * kSubpixelBins) / kSubpixelBins;
+        const double row = std::floor(g.y + 0.5);
+        // Pens far off the page (a huge margin is refused by the size check above; this guards
+        // the int conversions) draw nothing.
+        if (std::fabs(column) > kMaxImageDim * 2.0 || std::fabs(row) > kMaxImageDim * 2.0) continue;
+        auto cached = r.cache.get(r.rasterizer, r.font_id, g.gid, glyph);
+        if (!cached) return cached.error();
+        const CachedGlyph& c = **cached;
+        if (c.box.width == 0) continue;
+        const int x = static_cast<int>(column) + c.box.left;
+        const int y = static_cast<int>(row) - c.box.top;
+        if (options.mode == RenderMode::Gray)
+            blend_mask(page, c.mask, x, y, options.foreground);
+        else
+            blend_lcd_mask(page, c.mask, x, y, options.foreground,
+                           options.mode == RenderMode::LcdBgr);
+    }
+    return page;
+}
+
+}  // namespace bezel
