@@ -1,5 +1,7 @@
 #include "cli_common.hpp"
 
+#include "bezel/text.hpp"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -26,55 +28,10 @@ int fail_usage(const std::string& message, const std::string& command) {
 
 std::string version_string() { return std::string("bezel ") + BEZEL_VERSION; }
 
-Expected<std::u32string> decode_utf8(std::string_view text) {
-    std::u32string out;
-    std::size_t i = 0;
-    auto bad = [&](std::size_t at) {
-        return Error{"invalid UTF-8 at byte " + std::to_string(at)};
-    };
-    while (i < text.size()) {
-        auto b0 = static_cast<unsigned char>(text[i]);
-        // Sequence length from the lead byte; C0, C1 and F5..FF never start a valid sequence.
-        std::size_t n;
-        char32_t cp;
-        if (b0 < 0x80) { n = 1; cp = b0; }
-        else if (b0 >= 0xC2 && b0 <= 0xDF) { n = 2; cp = b0 & 0x1Fu; }
-        else if (b0 >= 0xE0 && b0 <= 0xEF) { n = 3; cp = b0 & 0x0Fu; }
-        else if (b0 >= 0xF0 && b0 <= 0xF4) { n = 4; cp = b0 & 0x07u; }
-        else return bad(i);
-        if (i + n > text.size()) return bad(i);
-        for (std::size_t k = 1; k < n; ++k) {
-            auto b = static_cast<unsigned char>(text[i + k]);
-            if ((b & 0xC0u) != 0x80u) return bad(i);
-            cp = (cp << 6) | (b & 0x3Fu);
-        }
-        // Overlong 3- and 4-byte forms, UTF-16 surrogates and values past Unicode's range.
-        if ((n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000) || (cp >= 0xD800 && cp <= 0xDFFF) ||
-            cp > 0x10FFFF)
-            return bad(i);
-        out.push_back(cp);
-        i += n;
-    }
-    return out;
-}
+// One UTF-8 implementation for the library and the CLI: bezel/text.hpp's.
+Expected<std::u32string> decode_utf8(std::string_view text) { return bezel::decode_utf8(text); }
 
-void append_utf8(std::string& out, char32_t cp) {
-    if (cp < 0x80) {
-        out += static_cast<char>(cp);
-    } else if (cp < 0x800) {
-        out += static_cast<char>(0xC0 | (cp >> 6));
-        out += static_cast<char>(0x80 | (cp & 0x3F));
-    } else if (cp < 0x10000) {
-        out += static_cast<char>(0xE0 | (cp >> 12));
-        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (cp & 0x3F));
-    } else {
-        out += static_cast<char>(0xF0 | (cp >> 18));
-        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
-        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (cp & 0x3F));
-    }
-}
+void append_utf8(std::string& out, char32_t cp) { bezel::append_utf8(out, cp); }
 
 Expected<char32_t> parse_code_point(std::string_view arg) {
     const std::string quoted = "--char '" + std::string(arg) + "'";
