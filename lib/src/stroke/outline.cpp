@@ -69,7 +69,7 @@ void ContourStroker::collect(const ContourInput& in) {
             continue;
         }
         pieces.clear();
-        split_cubic(seg.to_cubic(), h_, size_, pieces);
+        split_cubic(seg.to_cubic(), h_, size_, tol_, pieces);
         for (const CurvePiece& p : pieces) {
             Elem e;
             e.is_line = false;

@@ -11,10 +11,15 @@
 namespace bezel::stroke_detail {
 namespace {
 
-// |C′(t)| below this fraction of the control polygon's size is a cusp. Where |C′| stays above
-// it the turn is spread over a parameter range wide enough for the offset fitting to follow;
-// below it, the curve's deviation from its cusp point within that range is ~1e-12 of its size.
-constexpr double kCuspSpeed = 1e-6;
+// Near-cusps. At a speed minimum t* with A = C′(t*), B = C″(t*), the tangent A + B·u turns by
+// nearly π within |u| ≲ |A|/|B|, where the curve moves only ~|A|²/|B|. Sampling in t cannot see
+// that window, so the curve is always split at t* (the fast turn then sits at a piece's end,
+// where the exact end point and tangent expose it to the fitting). When even the window
+// u ∈ ±kCuspWindow·|A|/|B|, over which the curve moves ≈ kCuspWindow²·|A|²/(2|B|), lies within
+// tol/2 of the cusp point, the window is cut out and the point treated as a cusp: outside it the
+// tangent is within atan(1/kCuspWindow) < 1° of its limit, so the pieces on each side fit
+// easily, and the disc at the cusp covers what the window would have drawn.
+constexpr double kCuspWindow = 64.0;
 // Samples of |κ|·h − 1 between consecutive inflections / speed extrema, to bracket the crossings.
 constexpr int kTightSamples = 8;
 constexpr int kBisections = 60;
@@ -56,14 +61,15 @@ void tight_crossings(const CubicBez& c, double h, double lo, double hi, std::vec
 
 }  // namespace
 
-void split_cubic(const CubicBez& c, double h, double size, std::vector<CurvePiece>& out) {
+void split_cubic(const CubicBez& c, double h, double size, double tol,
+                 std::vector<CurvePiece>& out) {
     Rect box = c.control_box();
     double poly = std::max(box.width(), box.height());
     if (!(poly > 1e-12 * size)) return;
     Hodograph hod(c);
     Vec2 q0 = hod.q0, q1 = hod.q1, q2 = hod.q2;
 
-    // Speed extrema: d/dt |C′|² ∝ C′·C″ = 0, a cubic in t. The cusps are among them.
+    // Speed extrema: d/dt |C′|² ∝ C′·C″ = 0, a cubic in t. Cusps and near-cusps are among them.
     double speed_ext[3];
     int n_speed = solve_cubic_in(2 * q2.dot(q2), 3 * q1.dot(q2), 2 * q0.dot(q2) + q1.dot(q1),
                                  q0.dot(q1), 0.0, 1.0, speed_ext);
@@ -72,46 +78,63 @@ void split_cubic(const CubicBez& c, double h, double size, std::vector<CurvePiec
     int n_inflect = solve_quadratic_in(q1.cross(q2), 2 * q0.cross(q2), q0.cross(q1), 0.0, 1.0,
                                        inflect);
 
-    std::vector<double> cusps{0.0};
+    // Break parameters: cusp windows [lo, hi] (lo == hi for an exact cusp) and smooth splits at
+    // the other speed minima; `cusp_at[k]` says whether the piece after cut k starts at a cusp.
+    std::vector<double> cuts0{0.0};
+    std::vector<bool> cusp_at{false};
     for (int i = 0; i < n_speed; ++i) {
         double t = speed_ext[i];
-        if (t > 0.0 && t < 1.0 && hod.at(t).length() <= kCuspSpeed * poly) cusps.push_back(t);
+        if (!(t > 0.0 && t < 1.0)) continue;
+        Vec2 a = hod.at(t) * 3.0, b = (q1 + q2 * (2 * t)) * 3.0;
+        double al = a.length(), bl = b.length();
+        if (bl == 0.0) continue;  // a straight, uniformly moving stretch: no turn here
+        double window = kCuspWindow * al / bl;
+        if (0.5 * bl * window * window <= 0.5 * tol) {
+            double lo = std::max(t - window, cuts0.back()), hi = std::min(t + window, 1.0);
+            cuts0.push_back(lo);
+            cusp_at.push_back(false);
+            cuts0.push_back(hi);
+            cusp_at.push_back(true);
+        } else {
+            cuts0.push_back(std::max(t, cuts0.back()));
+            cusp_at.push_back(false);
+        }
     }
-    cusps.push_back(1.0);
+    cuts0.push_back(1.0);
+    cusp_at.push_back(false);
 
     std::vector<double> grid;
-    std::vector<double> cuts;  // all break parameters: cusps and tight crossings
-    for (std::size_t k = 0; k + 1 < cusps.size(); ++k) {
-        double lo = cusps[k], hi = cusps[k + 1];
-        grid.assign({lo, hi});
-        for (int i = 0; i < n_speed; ++i)
-            if (speed_ext[i] > lo && speed_ext[i] < hi) grid.push_back(speed_ext[i]);
+    bool pending_cusp = false;
+    for (std::size_t k = 0; k + 1 < cuts0.size(); ++k) {
+        double lo = cuts0[k], hi = cuts0[k + 1];
+        if (cusp_at[k + 1]) {  // [lo, hi] is a cusp's window: dropped, the next piece starts at it
+            pending_cusp = true;
+            continue;
+        }
+        if (!(hi > lo)) continue;
+        grid.assign({lo});
         for (int i = 0; i < n_inflect; ++i)
             if (inflect[i] > lo && inflect[i] < hi) grid.push_back(inflect[i]);
+        grid.push_back(hi);
         std::sort(grid.begin(), grid.end());
-        cuts.push_back(lo);
+        std::vector<double> cuts{lo};
         for (std::size_t g = 0; g + 1 < grid.size(); ++g)
             tight_crossings(c, h, grid[g], grid[g + 1], cuts);
-    }
-    cuts.push_back(1.0);
-
-    bool pending_cusp = false;
-    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
-        double u = cuts[k], v = cuts[k + 1];
-        if (k > 0 && std::find(cusps.begin() + 1, cusps.end() - 1, u) != cusps.end() - 1)
-            pending_cusp = true;
-        if (!(v > u)) continue;
-        CurvePiece piece;
-        piece.c = c.subsegment(u, v);
-        Rect pb = piece.c.control_box();
-        if (!(std::max(pb.width(), pb.height()) > 1e-12 * size)) continue;
-        double mid = 0.5 * (u + v);
-        double kappa = c.curvature(mid);
-        piece.tight = h * std::fabs(kappa) > 1.0;
-        piece.sigma = kappa > 0.0 ? 1 : -1;
-        piece.cusp_before = pending_cusp;
-        pending_cusp = false;
-        out.push_back(piece);
+        cuts.push_back(hi);
+        for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
+            double u = cuts[j], v = cuts[j + 1];
+            if (!(v > u)) continue;
+            CurvePiece piece;
+            piece.c = c.subsegment(u, v);
+            Rect pb = piece.c.control_box();
+            if (!(std::max(pb.width(), pb.height()) > 1e-12 * size)) continue;
+            double kappa = c.curvature(0.5 * (u + v));
+            piece.tight = h * std::fabs(kappa) > 1.0;
+            piece.sigma = kappa > 0.0 ? 1 : -1;
+            piece.cusp_before = pending_cusp;
+            pending_cusp = false;
+            out.push_back(piece);
+        }
     }
 }
 

@@ -48,9 +48,11 @@ struct CurvePiece {
     bool cusp_before = false;  // the piece starts at a cusp of the source curve
 };
 
-// Splits `c` at its cusps and at the parameters where |κ|·h = 1, dropping pieces of no extent.
-// `size` is the scale of the input (for the relative thresholds).
-void split_cubic(const CubicBez& c, double h, double size, std::vector<CurvePiece>& out);
+// Splits `c` at its speed minima (cutting out the window of a (near-)cusp, see split.cpp) and
+// where |κ|·h = 1, dropping pieces of no extent. `size` is the scale of the input (for the
+// relative thresholds), `tol` the stroke's tolerance.
+void split_cubic(const CubicBez& c, double h, double size, double tol,
+                 std::vector<CurvePiece>& out);
 
 // Appends cubic arcs of the circle around `center` with radius r from the current point (which
 // must be center + r·from) to center + r·to, turning the short way (|angle| ≤ π; pass an
