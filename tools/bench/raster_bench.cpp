@@ -2,7 +2,7 @@
 // on the same unhinted glyph outlines and the same preallocated A8 targets, in one run.
 //
 //   bench_raster [--font F]... [--sizes 12,16,...] [--glyphs ascii|all] [--reps N] [--json]
-//                [--accuracy]
+//                [--accuracy] [--breakdown] [--tolerance PX] [--only freetype|bezel|stb|agg]
 //
 // What is timed, per glyph, with the outline already loaded and converted outside the loop:
 //   freetype  memset of the target + FT_Outline_Render(FT_RASTER_FLAG_AA) into it (the smooth
@@ -83,6 +83,8 @@ struct Options {
     bool accuracy = false;
     bool breakdown = false;  // also time bezel's flatten and fill apart
     double tolerance_px = bezel::kDefaultRasterTolerancePx;
+    std::string only;  // time just this renderer (for profilers: callgrind, perf)
+    bool runs(const char* name) const { return only.empty() || only == name; }
 };
 
 // FT_Outline (y up, 26.6) → bezel Path (y down, pixels), via FreeType's own decomposition so
@@ -296,6 +298,7 @@ int main(int argc, char** argv) {
         else if (a == "--accuracy") opt.accuracy = true;
         else if (a == "--breakdown") opt.breakdown = true;
         else if (a == "--tolerance") opt.tolerance_px = std::atof(next().c_str());
+        else if (a == "--only") opt.only = next();
         else { std::fprintf(stderr, "bench_raster: unknown option %s\n", a.c_str()); return 2; }
     }
     if (opt.fonts.empty()) {
@@ -341,11 +344,14 @@ int main(int argc, char** argv) {
             t.fit(glyphs);
             unsigned char* px = t.pixels.data();
 
-            double ft = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) { render_freetype(lib, g, px); });
-            double bz = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) {
-                (void)rast.fill_path(g.path, bezel::Affine::identity(), bezel::FillRule::NonZero,
-                                     bezel::MaskView{px, g.width, g.height, g.width}, flat_opts);
-            });
+            double ft = -1, bz = -1;
+            if (opt.runs("freetype"))
+                ft = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) { render_freetype(lib, g, px); });
+            if (opt.runs("bezel"))
+                bz = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) {
+                    (void)rast.fill_path(g.path, bezel::Affine::identity(), bezel::FillRule::NonZero,
+                                         bezel::MaskView{px, g.width, g.height, g.width}, flat_opts);
+                });
             if (opt.breakdown) {
                 std::vector<bezel::Polylines> flat(glyphs.size());
                 for (std::size_t k = 0; k < glyphs.size(); ++k)
@@ -366,7 +372,7 @@ int main(int argc, char** argv) {
             }
             double stb = -1, agg_ns = -1;
 #ifdef BEZEL_HAVE_STB
-            if (f.stb_ok) {
+            if (f.stb_ok && opt.runs("stb")) {
                 const float scale = stbtt_ScaleForMappingEmToPixels(&f.stb, float(size));
                 // stb parses its own glyph data; done once per glyph outside the timed loop.
                 std::vector<std::pair<stbtt_vertex*, int>> shapes;
@@ -386,7 +392,7 @@ int main(int argc, char** argv) {
             }
 #endif
 #ifdef BEZEL_HAVE_AGG
-            {
+            if (opt.runs("agg")) {
                 agg::rasterizer_scanline_aa<> ras;
                 agg::scanline_u8 sl;
                 agg_ns = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) {

@@ -41,8 +41,13 @@ inline void mark_cells(std::uint8_t* frow, int i0, int i1) {
     for (int b = b0 + 1; b < b1; ++b) frow[b] = 1;
 }
 
+// Every drawing function takes kMark: true marks the blocks it writes (sparse bands, swept by
+// flags); false leaves the flags alone, for a DENSE band whose flags the caller set to 1
+// beforehand (narrow boxes, where nearly every block has an edge anyway).
+
 // Adds one in-row piece (xa → xb, vertical extent dy) to the deltas of one row.
 // Precondition: 0 ≤ xa, xb ≤ width, so indices ≤ width + 1 < stride.
+template <bool kMark = true>
 inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb, double dy) {
     if (xa > xb) std::swap(xa, xb);
     const int i0 = static_cast<int>(xa);  // floor: xa ≥ 0
@@ -50,9 +55,13 @@ inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb,
     if (i0 == i1 || xb == static_cast<double>(i0 + 1)) {
         // One column: m = mean offset inside the pixel.
         const double m = 0.5 * (xa + xb) - i0;
-        row[i0] += static_cast<float>(dy * (1.0 - m));
-        row[i0 + 1] += static_cast<float>(dy * m);
-        mark_cells(frow, i0, i0 + 1);
+        const double right = dy * m;
+        row[i0] += static_cast<float>(dy - right);
+        row[i0 + 1] += static_cast<float>(right);
+        if constexpr (kMark) {
+            frow[i0 >> kBlockShift] = 1;
+            frow[(i0 + 1) >> kBlockShift] = 1;
+        }
         return;
     }
     // Several columns; s = dy per unit of x (xb − xa ≥ the part past a column boundary > 0, and
@@ -75,11 +84,12 @@ inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb,
     const double d1 = s * w1;
     row[i1] += static_cast<float>(carry + d1 * (1.0 - 0.5 * w1));
     row[i1 + 1] += static_cast<float>(d1 * (0.5 * w1));
-    mark_cells(frow, i0, i1 + 1);
+    if constexpr (kMark) mark_cells(frow, i0, i1 + 1);
 }
 
 // Draws the edge (x0, y0) → (x1, y1) into the band.
 // Precondition: 0 ≤ x ≤ width and 0 ≤ y ≤ rows for both ends (the caller clips).
+template <bool kMark = true>
 inline void draw_line(const Band& band, double x0, double y0, double x1, double y1) {
     if (y0 == y1) return;  // horizontal edges carry no cover
     double dir = 1.0;
@@ -89,22 +99,62 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
         dir = -1.0;
     }
     int j = static_cast<int>(y0);  // floor, y0 ≥ 0
-    int jend = static_cast<int>(y1);
-    if (jend < y1) ++jend;          // ceil
     float* row = band.acc + j * band.stride;
     std::uint8_t* frow = band.flags + j * band.flag_stride;
-    if (jend - j == 1) {  // inside one row (most edges of small glyphs): no division
-        draw_row_piece(row, frow, x0, x1, dir * (y1 - y0));
+    if (y1 <= static_cast<double>(j + 1)) {  // inside one row (most edges of small glyphs)
+        draw_row_piece<kMark>(row, frow, x0, x1, dir * (y1 - y0));
         return;
     }
+    int jend = static_cast<int>(y1);
+    if (jend < y1) ++jend;  // ceil
     const double dxdy = (x1 - x0) / (y1 - y0);
     const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
+    const int ic = static_cast<int>(xlo);
+    if (xhi <= static_cast<double>(ic + 1)) {
+        // The whole edge stays in column ic (stems, steep edges at large sizes): each row's piece
+        // adds dy·(1 − m) and dy·m at ic, ic + 1 with m the piece's mean x − ic, and m moves by
+        // dxdy per full row. Only the first and last rows are partial.
+        float* cell = row + ic;
+        const double yb0 = static_cast<double>(j + 1);
+        double xa = x0 + (yb0 - y0) * dxdy;  // x where the edge leaves row j
+        double dy = dir * (yb0 - y0);
+        double right = dy * (0.5 * (x0 + xa) - ic);
+        const int b0 = ic >> kBlockShift, b1 = (ic + 1) >> kBlockShift;
+        for (;;) {
+            cell[0] += static_cast<float>(dy - right);
+            cell[1] += static_cast<float>(right);
+            if constexpr (kMark) {
+                frow[b0] = 1;
+                frow[b1] = 1;
+            }
+            ++j;
+            cell += band.stride;
+            frow += band.flag_stride;
+            if (j + 1 >= jend) break;
+            const double xb = xa + dxdy;  // full row: dy = dir, m = mean of xa, xb
+            right = dir * (0.5 * (xa + xb) - ic);
+            dy = dir;
+            xa = xb;
+        }
+        // Last row, from y = j to y1; the clamp keeps rounding from leaving the column.
+        const double ya = static_cast<double>(j);
+        xa = std::clamp(x0 + (ya - y0) * dxdy, xlo, xhi);
+        dy = dir * (y1 - ya);
+        right = dy * (0.5 * (xa + x1) - ic);
+        cell[0] += static_cast<float>(dy - right);
+        cell[1] += static_cast<float>(right);
+        if constexpr (kMark) {
+            frow[b0] = 1;
+            frow[b1] = 1;
+        }
+        return;
+    }
     double ya = y0, xa = x0;
     for (; j < jend; ++j, row += band.stride, frow += band.flag_stride) {
         const double yb = std::min(y1, static_cast<double>(j + 1));
         // Clamped to the edge's own x range: rounding must not push an index past the band.
         const double xb = yb == y1 ? x1 : std::clamp(x0 + (yb - y0) * dxdy, xlo, xhi);
-        draw_row_piece(row, frow, xa, xb, dir * (yb - ya));
+        draw_row_piece<kMark>(row, frow, xa, xb, dir * (yb - ya));
         ya = yb;
         xa = xb;
     }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bezel/raster.hpp"
+#include "raster/direct_fill.hpp"
 #include "raster/render_flatten.hpp"
 
 namespace bezel {
@@ -76,6 +77,13 @@ Status Rasterizer::fill_path_impl(const Path& path, const Affine& transform, Fil
                                   const View& target, const FlattenOptions& options) {
     if (!transform.is_finite()) return Error{"fill_path: transform is not finite"};
     const double tol = std::max(options.tolerance_px, kMinFlattenTolerancePx);
+    const bool balanced = options.method == FlattenMethod::WangUniform &&
+                          options.tolerance_px > 0.0 && std::isfinite(options.tolerance_px);
+    // The direct route (direct_fill.hpp) for glyph-like fills; false means it left the target
+    // alone and the general route below runs.
+    if (balanced && raster_detail::fill_path_direct(path, transform, rule, target, tol,
+                                                    {acc_, flags_, flattened_.points}))
+        return ok_status();
     const double estimate = estimate_segments(path, transform, tol);
     if (!(estimate <= static_cast<double>(kMaxEdges)))
         return Error{"fill_path: path would flatten to about " +
@@ -88,9 +96,7 @@ Status Rasterizer::fill_path_impl(const Path& path, const Affine& transform, Fil
     // step count, vertices moved so each chord has zero mean area error. Anything it does not
     // take (huge or non-finite points, a curve past the step cap) goes to flatten_checked, which
     // names the problem.
-    if (options.method == FlattenMethod::WangUniform && options.tolerance_px > 0.0 &&
-        std::isfinite(options.tolerance_px) &&
-        raster_detail::flatten_balanced(path, transform, tol, flattened_))
+    if (balanced && raster_detail::flatten_balanced(path, transform, tol, flattened_))
         return fill_impl(flattened_, rule, target, Vec2{});
     flattened_.clear();
     if (Status s = flatten_checked(path, transform, options, flattened_); !s)

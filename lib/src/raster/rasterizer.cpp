@@ -13,10 +13,10 @@
 #include <cmath>
 #include <cstring>
 #include <string>
-#include <type_traits>
 
 #include "bezel/raster.hpp"
 #include "raster/accumulate.hpp"
+#include "raster/fill_common.hpp"
 #include "raster/sweep.hpp"
 
 namespace bezel {
@@ -75,29 +75,6 @@ Bounds bounds_of(const std::vector<Point>& pts) {
     return b;
 }
 
-// Integer pixel range [lo, hi) of [a, b] + offset clamped to [0, n]. Computed in double: a
-// coordinate of 1e300 clamps before any conversion to int.
-void pixel_range(double a, double b, double offset, int n, int& lo, int& hi) {
-    double fa = std::floor(a + offset), fb = std::ceil(b + offset);
-    lo = static_cast<int>(std::clamp(fa, 0.0, static_cast<double>(n)));
-    hi = static_cast<int>(std::clamp(fb, 0.0, static_cast<double>(n)));
-}
-
-template <typename T>
-void clear_pixels(T* p, int n) {
-    if (n > 0) std::memset(p, 0, sizeof(T) * static_cast<std::size_t>(n));
-}
-
-// The sweep kernel for an output pixel type.
-inline void sweep_row(const rd::SweepKernels& k, FillRule rule, float* acc, std::uint8_t* flags,
-                      int n, std::uint8_t* out) {
-    k.u8[static_cast<int>(rule)](acc, flags, n, out);
-}
-inline void sweep_row(const rd::SweepKernels& k, FillRule rule, float* acc, std::uint8_t* flags,
-                      int n, float* out) {
-    k.f32[static_cast<int>(rule)](acc, flags, n, out);
-}
-
 // Every edge of every contour (closing edges included) into one band whose top-left pixel is
 // (bx, by) of the target.
 void draw_band(const Polylines& lines, Vec2 origin, int bx, int by, const rd::Band& band) {
@@ -139,29 +116,19 @@ Status Rasterizer::fill_impl(const Polylines& lines, FillRule rule, const View& 
     const Bounds b = bounds_of(lines.points);
     if (!b.finite) return Error{"polylines contain a NaN or infinite coordinate"};
 
-    using Pixel = std::remove_reference_t<decltype(*target.data)>;
     const int W = target.width, H = target.height;
     if (W == 0 || H == 0) return ok_status();
 
     int bx0 = 0, bx1 = 0, by0 = 0, by1 = 0;
     if (!lines.points.empty()) {
-        pixel_range(b.x0, b.x1, origin.x, W, bx0, bx1);
-        pixel_range(b.y0, b.y1, origin.y, H, by0, by1);
+        rd::pixel_range(b.x0, b.x1, origin.x, W, bx0, bx1);
+        rd::pixel_range(b.y0, b.y1, origin.y, H, by0, by1);
     }
     if (bx0 >= bx1 || by0 >= by1) {
         bx0 = bx1 = 0;
         by0 = by1 = 0;
     }
-    // Outside the box: 0.
-    for (int y = 0; y < H; ++y) {
-        Pixel* row = target.row(y);
-        if (y < by0 || y >= by1) {
-            clear_pixels(row, W);
-        } else {
-            clear_pixels(row, bx0);
-            clear_pixels(row + bx1, W - bx1);
-        }
-    }
+    rd::clear_outside_box(target, bx0, bx1, by0, by1);
     if (bx0 >= bx1) return ok_status();
 
     const int box_w = bx1 - bx0, box_h = by1 - by0;
@@ -181,7 +148,7 @@ Status Rasterizer::fill_impl(const Polylines& lines, FillRule rule, const View& 
         const rd::Band band{acc_.data(), flags_.data(), stride, flag_stride, box_w, rows};
         draw_band(lines, origin, bx0, y, band);
         for (int r = 0; r < rows; ++r)
-            sweep_row(kernels, rule, acc_.data() + r * stride, flags_.data() + r * flag_stride,
+            rd::sweep_row(kernels, rule, acc_.data() + r * stride, flags_.data() + r * flag_stride,
                       box_w, target.row(y + r) + bx0);
     }
     return ok_status();

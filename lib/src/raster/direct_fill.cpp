@@ -1,0 +1,117 @@
+// The direct fill route; see direct_fill.hpp.
+#include "raster/direct_fill.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "raster/accumulate.hpp"
+#include "raster/fill_common.hpp"
+#include "raster/render_flatten.hpp"
+
+namespace bezel::raster_detail {
+
+namespace {
+
+// Receives the balanced walk and draws each segment, closing every contour.
+template <bool kMark>
+struct DrawSink {
+    const Band& band;
+    double w, h;
+    Point first{}, cur{};
+
+    Point clamp(Point p) const { return {std::clamp(p.x, 0.0, w), std::clamp(p.y, 0.0, h)}; }
+    void move(Point p) { first = cur = clamp(p); }
+    void line(Point p) {
+        const Point q = clamp(p);
+        draw_line<kMark>(band, cur.x, cur.y, q.x, q.y);
+        cur = q;
+    }
+    void close() {
+        draw_line<kMark>(band, cur.x, cur.y, first.x, first.y);
+        cur = first;
+    }
+};
+
+template <bool kMark>
+void draw_path(const Path& path, const Point* local, double tol, const Band& band) {
+    DrawSink<kMark> sink{band, static_cast<double>(band.width), static_cast<double>(band.rows)};
+    walk_balanced(path.verbs(), tol,
+                  [local](std::size_t i, Point& p) {
+                      p = local[i];
+                      return true;
+                  },
+                  sink);
+}
+
+}  // namespace
+
+template <typename View>
+bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const View& target,
+                      double tol, const DirectScratch& scratch) {
+    const int W = target.width, H = target.height;
+    if (W <= 0 || H <= 0 || W > kMaxBitmapDim || H > kMaxBitmapDim || target.data == nullptr)
+        return false;
+    const std::vector<Point>& src = path.points();
+    if (src.empty()) return false;
+
+    // The transformed control points' box; x·0 is 0 unless x is NaN or infinite. Nothing is
+    // stored until the route is known to apply, so a refused path allocates nothing.
+    double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL, poison = 0.0;
+    for (const Point& q : src) {
+        const Point p = m * q;
+        x0 = std::min(x0, p.x);
+        x1 = std::max(x1, p.x);
+        y0 = std::min(y0, p.y);
+        y1 = std::max(y1, p.y);
+        poison += p.x * 0.0 + p.y * 0.0;
+    }
+    if (poison != 0.0) return false;
+    if (!(x0 >= 0.0 && y0 >= 0.0 && x1 <= W && y1 <= H)) return false;  // needs clipping
+
+    // Edge budget, the cheap bound of path_fill.cpp: a cubic in a control box of diagonal D needs
+    // at most ⌈√(1.5·D/tol)⌉ steps. Within it no curve can pass kMaxSegmentsPerCurve, so the
+    // walk below never stops halfway.
+    const double per_curve = std::ceil(std::sqrt(1.5 * std::hypot(x1 - x0, y1 - y0) / tol));
+    if (!(per_curve + 1.0 <= static_cast<double>(kMaxSegmentsPerCurve)) ||
+        static_cast<double>(path.verbs().size()) * (per_curve + 1.0) > static_cast<double>(kMaxEdges))
+        return false;
+
+    int bx0, bx1, by0, by1;
+    pixel_range(x0, x1, 0.0, W, bx0, bx1);
+    pixel_range(y0, y1, 0.0, H, by0, by1);
+    if (bx0 >= bx1 || by0 >= by1) return false;  // no area: the general route clears
+    const int box_w = bx1 - bx0, box_h = by1 - by0;
+    const std::ptrdiff_t stride = row_cells(box_w), flag_stride = row_blocks(box_w);
+    const std::size_t cells = static_cast<std::size_t>(box_h) * static_cast<std::size_t>(stride);
+    if (cells > kMaxBandCells) return false;  // several bands: the general route
+    const std::size_t flags = static_cast<std::size_t>(box_h) * static_cast<std::size_t>(flag_stride);
+    if (scratch.acc.size() < cells) scratch.acc.resize(cells, 0.0f);
+    if (scratch.flags.size() < flags) scratch.flags.resize(flags, 0);
+
+    clear_outside_box(target, bx0, bx1, by0, by1);
+    // Band-relative control points (the same product as above, so the same box).
+    std::vector<Point>& tp = scratch.points;
+    tp.resize(src.size());
+    const Vec2 shift{static_cast<double>(bx0), static_cast<double>(by0)};
+    for (std::size_t i = 0; i < src.size(); ++i) tp[i] = m * src[i] - shift;
+    const Band band{scratch.acc.data(), scratch.flags.data(), stride, flag_stride, box_w, box_h};
+    if (flag_stride <= kDenseBlocks) {
+        std::memset(band.flags, 1, flags);
+        draw_path<false>(path, tp.data(), tol, band);
+    } else {
+        draw_path<true>(path, tp.data(), tol, band);
+    }
+    const SweepKernels& kernels = best_kernels();
+    for (int r = 0; r < box_h; ++r)
+        sweep_row(kernels, rule, band.acc + r * stride, band.flags + r * flag_stride, box_w,
+                  target.row(by0 + r) + bx0);
+    return true;
+}
+
+template bool fill_path_direct<MaskView>(const Path&, const Affine&, FillRule, const MaskView&,
+                                         double, const DirectScratch&);
+template bool fill_path_direct<FloatMaskView>(const Path&, const Affine&, FillRule,
+                                              const FloatMaskView&, double, const DirectScratch&);
+
+}  // namespace bezel::raster_detail

@@ -1,0 +1,52 @@
+// Private: the steps every fill route shares once it knows its pixel box — clearing the target
+// outside the box, and sweeping one band row into the target.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "bezel/raster.hpp"
+#include "raster/sweep.hpp"
+
+namespace bezel::raster_detail {
+
+// Integer pixel range [lo, hi) of [a, b] + offset clamped to [0, n]. Computed in double: a
+// coordinate of 1e300 clamps before any conversion to int.
+inline void pixel_range(double a, double b, double offset, int n, int& lo, int& hi) {
+    const double fa = std::floor(a + offset), fb = std::ceil(b + offset);
+    lo = static_cast<int>(std::clamp(fa, 0.0, static_cast<double>(n)));
+    hi = static_cast<int>(std::clamp(fb, 0.0, static_cast<double>(n)));
+}
+
+template <typename T>
+inline void clear_pixels(T* p, int n) {
+    if (n > 0) std::memset(p, 0, sizeof(T) * static_cast<std::size_t>(n));
+}
+
+// Writes 0 to every pixel of `target` outside the box [bx0, bx1) × [by0, by1).
+template <typename View>
+void clear_outside_box(const View& target, int bx0, int bx1, int by0, int by1) {
+    for (int y = 0; y < target.height; ++y) {
+        auto* row = target.row(y);
+        if (y < by0 || y >= by1) {
+            clear_pixels(row, target.width);
+        } else {
+            clear_pixels(row, bx0);
+            clear_pixels(row + bx1, target.width - bx1);
+        }
+    }
+}
+
+// The sweep kernel for an output pixel type.
+inline void sweep_row(const SweepKernels& k, FillRule rule, float* acc, std::uint8_t* flags, int n,
+                      std::uint8_t* out) {
+    k.u8[static_cast<int>(rule)](acc, flags, n, out);
+}
+inline void sweep_row(const SweepKernels& k, FillRule rule, float* acc, std::uint8_t* flags, int n,
+                      float* out) {
+    k.f32[static_cast<int>(rule)](acc, flags, n, out);
+}
+
+}  // namespace bezel::raster_detail
