@@ -24,8 +24,11 @@ std::string command_path(const CLI::App& app) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    using namespace bezel::cli;
+namespace bezel::cli {
+
+// The whole CLI as a function, so that tests/fuzz/fuzz_cli.cpp can run it in-process (built
+// with BEZEL_CLI_NO_MAIN, which leaves main() out).
+int run_cli(int argc, char** argv) {
     CLI::App app{
         "bezel: a font and vector-outline engine.\n"
         "Inspect glyph outlines point by point, as text, JSON or an annotated SVG."};
@@ -67,3 +70,9 @@ int main(int argc, char** argv) {
     // require_subcommand(1) makes this unreachable; stay defined anyway.
     return fail_usage("no command given", "bezel");
 }
+
+}  // namespace bezel::cli
+
+#ifndef BEZEL_CLI_NO_MAIN
+int main(int argc, char** argv) { return bezel::cli::run_cli(argc, argv); }
+#endif
