@@ -16,6 +16,7 @@
 
 #include "bezel/raster.hpp"
 #include "raster/reference.hpp"
+#include "raster/render_flatten.hpp"
 #include "raster/sweep.hpp"
 
 namespace bezel {
@@ -233,6 +234,139 @@ TEST(RasterReference, NearHorizontalAndNearVerticalEdgesMatchReference) {
         std::vector<double> ref = reference_coverage(cases[c], FillRule::NonZero, 32, 32, {});
         for (std::size_t i = 0; i < ref.size(); ++i)
             ASSERT_NEAR(f.px[i], ref[i], kFloatTol) << "case " << c << " pixel " << i;
+    }
+}
+
+// --- fill_path's direct route (direct_fill.hpp): curves flattened straight into the band --------
+
+// A random closed path of lines, quads and cubics with every control point in the unit square
+// (so its image under a map into a target lies inside the target), 1..3 contours.
+Path random_curved_path(std::mt19937& rng) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    auto pt = [&] { return Point{u(rng), u(rng)}; };
+    Path p;
+    const int contours = 1 + static_cast<int>(rng() % 3);
+    for (int c = 0; c < contours; ++c) {
+        p.move_to(pt());
+        const int verbs = 1 + static_cast<int>(rng() % 6);
+        for (int k = 0; k < verbs; ++k) {
+            switch (rng() % 3) {
+                case 0: p.line_to(pt()); break;
+                case 1: p.quad_to(pt(), pt()); break;
+                default: p.cubic_to(pt(), pt(), pt()); break;
+            }
+        }
+        p.close();
+    }
+    return p;
+}
+
+// The general route's input: the same balanced polyline fill_path flattens to.
+Polylines balanced_polyline(const Path& p, const Affine& m, double tol) {
+    Polylines lines;
+    EXPECT_TRUE(raster_detail::flatten_balanced(p, m, tol, lines));
+    return lines;
+}
+
+TEST(RasterDirect, FillPathMatchesReferenceAndGeneralRouteOnRandomCurvedPaths) {
+    // Targets 1..90 px wide cover both regimes (dense up to 3 blocks per row, sparse beyond);
+    // transforms: axis-aligned (flipped or not) and rotated. Points keep a margin of 0.5 px from
+    // the target border, beyond any balanced vertex's excursion (< tol), so the route draws
+    // exactly the balanced polyline: the reference on that polyline is the oracle.
+    std::mt19937 rng(2024);
+    Rasterizer r;
+    const double tol = kDefaultRasterTolerancePx;
+    double worst_f = 0.0;
+    for (int trial = 0; trial < 400; ++trial) {
+        const int w = 1 + static_cast<int>(rng() % 90), h = 1 + static_cast<int>(rng() % 90);
+        const Path p = random_curved_path(rng);
+        Affine m;
+        switch (trial % 3) {
+            case 0: m = {w - 1.0, 0, 0, h - 1.0, 0.5, 0.5}; break;
+            case 1: m = {-(w - 1.0), 0, 0, h - 1.0, w - 0.5, 0.5}; break;  // mirrored
+            default: {
+                // The unit square, centred, rotated, scaled into the inscribed circle.
+                const double t = 0.1 + trial * 0.37, s = (std::min(w, h) - 1.0) / std::sqrt(2.0);
+                m = Affine::translate({w / 2.0, h / 2.0}) *
+                    Affine{s * std::cos(t), s * std::sin(t), -s * std::sin(t), s * std::cos(t), 0, 0} *
+                    Affine::translate({-0.5, -0.5});
+            }
+        }
+        const FillRule rule = trial % 2 ? FillRule::EvenOdd : FillRule::NonZero;
+        const Polylines lines = balanced_polyline(p, m, tol);
+        FloatImage f(w, h);
+        Mask direct(w, h), general(w, h);
+        ASSERT_TRUE(r.fill_path(p, m, rule, f.view()).ok());
+        ASSERT_TRUE(r.fill_path(p, m, rule, direct.view()).ok());
+        ASSERT_TRUE(r.fill(lines, rule, general.view()).ok());
+        const std::vector<double> ref = reference_coverage(lines, rule, w, h, {});
+        const std::vector<unsigned char> ref8 = reference_u8(lines, rule, w, h, {});
+        for (std::size_t i = 0; i < ref.size(); ++i) {
+            worst_f = std::max(worst_f, std::fabs(f.px[i] - ref[i]));
+            ASSERT_LE(std::abs(int(direct.pixels()[i]) - int(ref8[i])), 1) << "trial " << trial;
+            ASSERT_LE(std::abs(int(direct.pixels()[i]) - int(general.pixels()[i])), 1)
+                << "trial " << trial;
+        }
+        ASSERT_LE(worst_f, kFloatTol) << "trial " << trial;
+    }
+    RecordProperty("worst_float_error", std::to_string(worst_f));
+}
+
+TEST(RasterDirect, PathTouchingEveryTargetBorderStaysWithinTheTolerance) {
+    // Control points ON the border (a glyph box starting at pixel 0, the common case): balanced
+    // vertices may stray < tol outside, which the route folds back into the band. Coverage then
+    // differs from the exact polyline's by at most the excursion's area in a pixel, < tol.
+    const double tol = kDefaultRasterTolerancePx;
+    Path p;  // an ellipse of four cubics touching all four sides of [0, 37] × [0, 23]
+    const double k = 0.5523, cx = 18.5, cy = 11.5, rx = 18.5, ry = 11.5;
+    p.move_to({cx + rx, cy});
+    p.cubic_to({cx + rx, cy + k * ry}, {cx + k * rx, cy + ry}, {cx, cy + ry});
+    p.cubic_to({cx - k * rx, cy + ry}, {cx - rx, cy + k * ry}, {cx - rx, cy});
+    p.cubic_to({cx - rx, cy - k * ry}, {cx - k * rx, cy - ry}, {cx, cy - ry});
+    p.cubic_to({cx + k * rx, cy - ry}, {cx + rx, cy - k * ry}, {cx + rx, cy});
+    p.close();
+    p.move_to({0, 23});  // a quad corner sitting in the target's bottom-left corner
+    p.quad_to({0, 20}, {3, 23});
+    p.close();
+    Rasterizer r;
+    for (FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
+        FloatImage f(37, 23);
+        ASSERT_TRUE(r.fill_path(p, Affine::identity(), rule, f.view()).ok());
+        const std::vector<double> ref =
+            reference_coverage(balanced_polyline(p, Affine::identity(), tol), rule, 37, 23, {});
+        for (std::size_t i = 0; i < ref.size(); ++i) ASSERT_NEAR(f.px[i], ref[i], tol) << i;
+    }
+}
+
+TEST(RasterDirect, SteepEdgesInsideOneColumnMatchReference) {
+    // Edges that stay in one pixel column over many rows take the per-row loop of draw_line:
+    // fractional and integer ends, both directions, at the left border, inside, and on the last
+    // column's right border. Through fill (sparse, marking) and fill_path (the direct route).
+    std::vector<Polylines> cases = {
+        polygon({{{3.2, 0.3}, {3.9, 40.7}, {20.0, 40.7}, {20.0, 0.3}}}),
+        polygon({{{3.9, 40.0}, {3.1, 1.0}, {0.0, 1.0}, {0.0, 40.0}}}),
+        polygon({{{0.0, 2.5}, {0.6, 37.25}, {9.0, 20.0}}}),
+        polygon({{{63.0, 5.0}, {63.999, 39.5}, {64.0, 0.0}}}),  // 64 wide: the sparse regime
+        polygon({{{10.0, 0.0}, {10.0, 41.0}, {11.0, 41.0}, {11.0, 0.0}}}),
+    };
+    Rasterizer r;
+    for (std::size_t c = 0; c < cases.size(); ++c) {
+        FloatImage f(64, 41), g(64, 41);
+        ASSERT_TRUE(r.fill(cases[c], FillRule::NonZero, f.view()).ok());
+        Path p;
+        std::size_t start = 0;
+        for (std::size_t end : cases[c].contour_ends) {
+            p.move_to(cases[c].points[start]);
+            for (std::size_t i = start + 1; i < end; ++i) p.line_to(cases[c].points[i]);
+            p.close();
+            start = end;
+        }
+        ASSERT_TRUE(r.fill_path(p, Affine::identity(), FillRule::NonZero, g.view()).ok());
+        const std::vector<double> ref = reference_coverage(cases[c], FillRule::NonZero, 64, 41, {});
+        for (std::size_t i = 0; i < ref.size(); ++i) {
+            ASSERT_NEAR(f.px[i], ref[i], kFloatTol) << "case " << c << " pixel " << i;
+            ASSERT_NEAR(g.px[i], ref[i], kFloatTol) << "case " << c << " pixel " << i;
+        }
     }
 }
 

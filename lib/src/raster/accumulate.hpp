@@ -49,13 +49,18 @@ inline void mark_cells(std::uint8_t* frow, int i0, int i1) {
 // Precondition: 0 ≤ xa, xb ≤ width, so indices ≤ width + 1 < stride.
 template <bool kMark = true>
 inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb, double dy) {
-    if (xa > xb) std::swap(xa, xb);
-    const int i0 = static_cast<int>(xa);  // floor: xa ≥ 0
-    const int i1 = static_cast<int>(xb);
-    if (i0 == i1 || xb == static_cast<double>(i0 + 1)) {
+    int i0 = static_cast<int>(xa);  // floor: xa ≥ 0
+    int i1 = static_cast<int>(xb);
+    if (i0 != i1) {
+        if (xa > xb) {
+            std::swap(xa, xb);
+            std::swap(i0, i1);
+        }
+        if (xb == static_cast<double>(i0 + 1)) i1 = i0;  // ends on the column's right border
+    }
+    if (i0 == i1) {
         // One column: m = mean offset inside the pixel.
-        const double m = 0.5 * (xa + xb) - i0;
-        const double right = dy * m;
+        const double right = dy * (0.5 * (xa + xb) - i0);
         row[i0] += static_cast<float>(dy - right);
         row[i0 + 1] += static_cast<float>(right);
         if constexpr (kMark) {
@@ -91,17 +96,24 @@ inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb,
 // Precondition: 0 ≤ x ≤ width and 0 ≤ y ≤ rows for both ends (the caller clips).
 template <bool kMark = true>
 inline void draw_line(const Band& band, double x0, double y0, double x1, double y1) {
-    if (y0 == y1) return;  // horizontal edges carry no cover
+    if (y0 == y1) return;  // horizontal edges carry no cover (and y = rows has no row)
+    int j = static_cast<int>(y0);  // floor, y ≥ 0
+    if (j == static_cast<int>(y1)) {
+        // Inside one row (most edges of small glyphs): no ordering, no division.
+        draw_row_piece<kMark>(band.acc + j * band.stride, band.flags + j * band.flag_stride, x0,
+                              x1, y1 - y0);
+        return;
+    }
     double dir = 1.0;
     if (y0 > y1) {
         std::swap(x0, x1);
         std::swap(y0, y1);
         dir = -1.0;
+        j = static_cast<int>(y0);
     }
-    int j = static_cast<int>(y0);  // floor, y0 ≥ 0
     float* row = band.acc + j * band.stride;
     std::uint8_t* frow = band.flags + j * band.flag_stride;
-    if (y1 <= static_cast<double>(j + 1)) {  // inside one row (most edges of small glyphs)
+    if (y1 <= static_cast<double>(j + 1)) {  // ends on the row's lower border
         draw_row_piece<kMark>(row, frow, x0, x1, dir * (y1 - y0));
         return;
     }

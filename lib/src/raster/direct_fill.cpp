@@ -14,13 +14,19 @@ namespace bezel::raster_detail {
 namespace {
 
 // Receives the balanced walk and draws each segment, closing every contour.
+//
+// Vertices lie within 2/3·tol of the control box (curve points lie in it; a balanced vertex is
+// moved by |Δ²|/12 ≤ 8·tol/12), so with tol ≤ kDirectMaxTolerancePx a coordinate is > −1/3.
+// Below 0 needs no clamp: draw_line's int conversion truncates toward zero, so such a point
+// lands in column / row 0 as if it were at 0 (within its excursion). Above the band it must be
+// clamped: x to the width (exact, accumulate.hpp), y to the rows (moves it by < tol).
 template <bool kMark>
 struct DrawSink {
     const Band& band;
     double w, h;
     Point first{}, cur{};
 
-    Point clamp(Point p) const { return {std::clamp(p.x, 0.0, w), std::clamp(p.y, 0.0, h)}; }
+    Point clamp(Point p) const { return {std::min(p.x, w), std::min(p.y, h)}; }
     void move(Point p) { first = cur = clamp(p); }
     void line(Point p) {
         const Point q = clamp(p);
@@ -50,21 +56,34 @@ template <typename View>
 bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const View& target,
                       double tol, const DirectScratch& scratch) {
     const int W = target.width, H = target.height;
+    if (!(tol <= kDirectMaxTolerancePx)) return false;
     if (W <= 0 || H <= 0 || W > kMaxBitmapDim || H > kMaxBitmapDim || target.data == nullptr)
         return false;
     const std::vector<Point>& src = path.points();
     if (src.empty()) return false;
 
     // The transformed control points' box; x·0 is 0 unless x is NaN or infinite. Nothing is
-    // stored until the route is known to apply, so a refused path allocates nothing.
+    // stored until the route is known to apply, so a refused path allocates nothing. For an
+    // axis-aligned transform (glyphs: scale and offset) the box is the image of the source box:
+    // x ↦ a·x + e is monotone in floating point too, so the extreme points map to the extremes.
     double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL, poison = 0.0;
+    const bool axis_aligned = m.b == 0.0 && m.c == 0.0;
     for (const Point& q : src) {
-        const Point p = m * q;
+        const Point p = axis_aligned ? q : m * q;
         x0 = std::min(x0, p.x);
         x1 = std::max(x1, p.x);
         y0 = std::min(y0, p.y);
         y1 = std::max(y1, p.y);
         poison += p.x * 0.0 + p.y * 0.0;
+    }
+    if (axis_aligned) {
+        const double xa = m.a * x0 + m.e, xb = m.a * x1 + m.e;
+        const double ya = m.d * y0 + m.f, yb = m.d * y1 + m.f;
+        x0 = std::min(xa, xb);
+        x1 = std::max(xa, xb);
+        y0 = std::min(ya, yb);
+        y1 = std::max(ya, yb);
+        poison += x0 * 0.0 + x1 * 0.0 + y0 * 0.0 + y1 * 0.0;
     }
     if (poison != 0.0) return false;
     if (!(x0 >= 0.0 && y0 >= 0.0 && x1 <= W && y1 <= H)) return false;  // needs clipping

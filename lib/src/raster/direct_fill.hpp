@@ -10,8 +10,8 @@
 // The polyline is the one flatten_balanced makes (the same walk, render_flatten.hpp), so the
 // coverage equals the general route's up to float rounding of the band-relative coordinates.
 // Balanced vertices sit up to |Δ²|/12 ≤ tol off the curve, outward, so one may stray out of the
-// control box by less than tol; its y is clamped into the band (x clamping is exact, see
-// accumulate.hpp), moving that vertex by less than tol, within the flattening error.
+// control box by less than tol; such a vertex is drawn as if moved into the band (x clamping is
+// exact, see accumulate.hpp; in y it moves by less than tol), within the flattening error.
 //
 // Two regimes by box width: a box of at most kDenseBlocks blocks per row (small sizes) is DENSE —
 // its flags are all set before drawing and edges skip marking, since nearly every block holds an
@@ -26,6 +26,9 @@
 namespace bezel::raster_detail {
 
 inline constexpr int kDenseBlocks = 3;
+// Largest flattening tolerance the direct route takes (vertex excursions stay under 1/3 px, see
+// direct_fill.cpp); coarser tolerances go the general route.
+inline constexpr double kDirectMaxTolerancePx = 0.5;
 
 struct DirectScratch {
     std::vector<float>& acc;            // band deltas, all zero between calls

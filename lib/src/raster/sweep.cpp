@@ -81,7 +81,7 @@ struct Sse2Block {
         } else {
             alignas(16) std::uint8_t tmp[kBlock];
             _mm_store_si128(reinterpret_cast<__m128i*>(tmp), bytes);
-            std::memcpy(out, tmp, static_cast<std::size_t>(count));
+            copy_tail(out, tmp, count);
         }
     }
 

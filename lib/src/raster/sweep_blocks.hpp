@@ -19,20 +19,41 @@ namespace bezel::raster_detail {
 // inside `#pragma GCC target("avx2")`), and the copies must not be merged by the linker.
 namespace {
 
+// Writes the first `count` (0..15) bytes of `src` with fixed-size moves instead of a memcpy
+// call (row tails and short runs; the call costs more than the copy).
+inline void copy_tail(std::uint8_t* out, const std::uint8_t* src, int count) {
+    if (count & 8) { std::memcpy(out, src, 8); out += 8; src += 8; }
+    if (count & 4) { std::memcpy(out, src, 4); out += 4; src += 4; }
+    if (count & 2) { std::memcpy(out, src, 2); out += 2; src += 2; }
+    if (count & 1) *out = *src;
+}
+
+// A run of `count` pixels of constant coverage f(a): 32- then 16-byte stores (runs are a few
+// blocks long, where a memset call costs more than the stores), the row's tail by pieces.
 inline void fill_run(std::uint8_t* out, int count, float a, FillRule rule) {
-    std::memset(out, coverage_u8(a, rule), static_cast<std::size_t>(count));
+    std::uint8_t chunk[2 * kBlock];
+    std::memset(chunk, coverage_u8(a, rule), sizeof chunk);
+    for (; count >= 2 * kBlock; count -= 2 * kBlock, out += 2 * kBlock)
+        std::memcpy(out, chunk, 2 * kBlock);
+    if (count >= kBlock) {
+        std::memcpy(out, chunk, kBlock);
+        out += kBlock;
+        count -= kBlock;
+    }
+    copy_tail(out, chunk, count);
 }
 inline void fill_run(float* out, int count, float a, FillRule rule) {
     std::fill(out, out + count, coverage_of(a, rule));
 }
 
 // Index of the first marked block at or after b (nb when none). Eight flags at a time: a
-// glyph row at large sizes is mostly unmarked.
+// glyph row at large sizes is mostly unmarked. Flags are 0 or 1, so the first nonzero byte of
+// a little-endian word is at its lowest set bit / 8.
 inline int next_marked(const std::uint8_t* flags, int b, int nb) {
     while (b + 8 <= nb) {
         std::uint64_t word;
         std::memcpy(&word, flags + b, 8);
-        if (word != 0) break;
+        if (word != 0) return b + (__builtin_ctzll(word) >> 3);
         b += 8;
     }
     while (b < nb && !flags[b]) ++b;
