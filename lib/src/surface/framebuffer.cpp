@@ -29,7 +29,7 @@ LinearRgb linear(Rgba8 c) { return {srgb_to_linear(c.r), srgb_to_linear(c.g), sr
 Framebuffer::Framebuffer(int width, int height)
     : width_(width), height_(height),
       rgb_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height)),
-      cover_(rgb_.size(), 0.0f) {}
+      cover_(rgb_.size(), 0.0f), depth_(rgb_.size(), HUGE_VALF) {}
 
 Image Framebuffer::resolve(Rgba8 background) const {
     Image out(width_, height_);

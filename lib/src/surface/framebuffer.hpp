@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -33,6 +34,24 @@ public:
         rgb_[k].r += take * c.r, rgb_[k].g += take * c.g, rgb_[k].b += take * c.b;
         cover_[k] += take;
     }
+    // The same with a depth test that repairs the depth sort where it got the order wrong
+    // (pieces that interpenetrate, like the teapot's spout entering the body): a fragment nearer
+    // than everything drawn at the pixel by more than `margin` is composited "over" what is
+    // there instead of under it. Within `margin` (abutting triangles) it is plain saturating.
+    void add_with_depth(int x, int y, float alpha, LinearRgb c, float depth, float margin) {
+        std::size_t k = index(x, y);
+        if (cover_[k] > 0.0f && depth < depth_[k] - margin) {
+            float keep = 1.0f - alpha;
+            rgb_[k].r = rgb_[k].r * keep + alpha * c.r;
+            rgb_[k].g = rgb_[k].g * keep + alpha * c.g;
+            rgb_[k].b = rgb_[k].b * keep + alpha * c.b;
+            cover_[k] = cover_[k] * keep + alpha;
+            depth_[k] = depth;
+            return;
+        }
+        depth_[k] = std::min(depth_[k], depth);
+        add_saturating(x, y, alpha, c);
+    }
     float cover(int x, int y) const { return cover_[index(x, y)]; }
     // The picture over `background`: rgb + (1 − coverage)·background, encoded to sRGB, opaque.
     Image resolve(Rgba8 background) const;
@@ -45,6 +64,7 @@ private:
     int width_, height_;
     std::vector<LinearRgb> rgb_;
     std::vector<float> cover_;
+    std::vector<float> depth_;  // nearest depth drawn at each pixel (add_with_depth only)
 };
 
 }  // namespace bezel::surface_detail

@@ -65,6 +65,10 @@ Expected<Image> render_solid(const TriangleMesh& mesh, const View& view, const S
     std::stable_sort(order.begin(), order.end(),
                      [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
 
+    double zmin = HUGE_VAL, zmax = -HUGE_VAL;
+    for (std::uint32_t m : order)
+        for (std::uint32_t v : mesh.triangles[m]) zmin = std::min(zmin, screen[v].z), zmax = std::max(zmax, screen[v].z);
+    const double depth_range = zmax > zmin ? zmax - zmin : 0.0;
     const int W = view.width(), H = view.height();
     Framebuffer fb(W, H);
     const LinearRgb base = surface_detail::linear(style.color);
@@ -101,30 +105,43 @@ Expected<Image> render_solid(const TriangleMesh& mesh, const View& view, const S
         const Vec3 n[3] = {mesh.normals[t[0]] * side, mesh.normals[t[1]] * side,
                            mesh.normals[t[2]] * side};
         const bool perspective = view.projection() == Projection::Perspective;
+        // Depth-test margin: how much depth can change across a pixel on this triangle (its
+        // screen-space depth gradient; the clamped barycentrics of an edge pixel move the sample
+        // up to ~0.7 px), with room for the neighbour's gradient, plus a sliver of the scene.
+        const double gx = ((b.z - a.z) * (pc.y - pa.y) - (c.z - a.z) * (pb.y - pa.y)) / area2;
+        const double gy = ((c.z - a.z) * (pb.x - pa.x) - (b.z - a.z) * (pc.x - pa.x)) / area2;
+        const float margin =
+            static_cast<float>(1.5 * (std::fabs(gx) + std::fabs(gy)) + 1e-4 * depth_range);
         for (int y = y0; y < y1; ++y) {
             const std::uint8_t* row = cover.data() + static_cast<std::size_t>(y - y0) * bw;
             for (int x = x0; x < x1; ++x) {
                 const std::uint8_t cv = row[x - x0];
-                if (cv == 0 || fb.cover(x, y) >= 1.0f) continue;
+                if (cv == 0) continue;
+                // Screen-space barycentrics of the pixel centre, clamped into the triangle (edge
+                // pixels have centres outside it). Under perspective 1/z is linear on screen, so
+                // λᵢ/zᵢ are the perspective-correct weights and 1/Σ(λᵢ/zᵢ) the depth.
+                const Vec2 p{x + 0.5, y + 0.5};
+                double l[3] = {(pb - p).cross(pc - p) / area2, (pc - p).cross(pa - p) / area2, 0};
+                l[2] = 1.0 - l[0] - l[1];
+                for (double& w : l) w = std::max(0.0, w);
+                const double lsum = l[0] + l[1] + l[2];
+                const double z[3] = {a.z, b.z, c.z};
+                double sum = 0.0, depth = 0.0;
+                for (int k = 0; k < 3; ++k) {
+                    l[k] /= lsum;
+                    if (perspective) l[k] /= z[k];
+                    sum += l[k];
+                    depth += l[k] * z[k];
+                }
+                depth = perspective ? 1.0 / sum : depth;
                 LinearRgb colour = flat;
                 if (style.shading == Shading::Smooth) {
-                    // Screen-space barycentrics of the pixel centre, clamped into the triangle
-                    // (edge pixels have centres outside it), then perspective-corrected by 1/z.
-                    const Vec2 p{x + 0.5, y + 0.5};
-                    double l[3] = {(pb - p).cross(pc - p) / area2, (pc - p).cross(pa - p) / area2, 0};
-                    l[2] = 1.0 - l[0] - l[1];
-                    double sum = 0.0;
-                    for (int k = 0; k < 3; ++k) {
-                        l[k] = std::max(0.0, l[k]);
-                        if (perspective) l[k] /= (k == 0 ? a.z : k == 1 ? b.z : c.z);
-                        sum += l[k];
-                    }
-                    Vec3 ni = (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]) / sum;
-                    ni = ni.normalized();
+                    Vec3 ni = ((n[0] * l[0] + n[1] * l[1] + n[2] * l[2]) / sum).normalized();
                     if (ni == Vec3{}) ni = facet * side;
                     colour = shade(base, lambert(style, ni, light));
                 }
-                fb.add_saturating(x, y, alpha * static_cast<float>(cv) * (1.0f / 255.0f), colour);
+                fb.add_with_depth(x, y, alpha * static_cast<float>(cv) * (1.0f / 255.0f), colour,
+                                  static_cast<float>(depth), margin);
             }
         }
     }
