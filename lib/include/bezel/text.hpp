@@ -136,7 +136,25 @@ struct TextLayout {
 // width_px > 0 lines wrap at break opportunities (after spaces, after hyphens, between ideographs;
 // a word wider than the line is broken between clusters); each line is shaped per run of one
 // script and direction, runs ordered right to left within an RTL paragraph. `metrics` gives line
-// height. Errors as Shaper::shape, plus a negative or non-finite width/margin/line height.
+// height. Errors as Shaper::shape, plus a negative or non-finite width/margin/line height,
+// metrics with units_per_em ≤ 0, and a vertical direction (layout is horizontal only).
+//
+// Lines: N line separators make N + 1 lines (an empty text is one empty line); the first
+// baseline is at margin + ascender; spaces at the end of a wrapped line hang (not placed, not
+// counted in its width, but inside its text range). Where a line cuts a word between clusters,
+// both pieces are reshaped (Arabic letters at the cut take their final/initial forms).
+//
+// Bidi is a simplified Unicode Bidirectional Algorithm (UAX #9), without fribidi. Implemented:
+// the paragraph direction from its first strong character (P2/P3) unless shape.direction gives
+// it; strong classes from the Unicode script (letters of Hebrew, Arabic, Syriac, Thaana, N'Ko, …
+// are R, other letters L); marks take the class before them (W1); digits are left-to-right
+// numbers, one level up unless they follow L text (W2, W7, I1, I2); neutrals between equal
+// directions take it, others the paragraph's (N1, N2); runs reordered by level per line (L2).
+// Left out: explicit embeddings, overrides and isolates (LRE…PDI are neutrals), the number
+// separator/terminator rules W3–W6 ("1,000" or "5%" beside Arabic may split), paired brackets
+// (N0), and L1 (trailing whitespace keeps its level; wrapped lines drop it instead). Line
+// breaking is a subset of UAX #14: no dictionary breaking (Thai, Lao, Khmer), no quotation or
+// numeric prefix/postfix classes.
 Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
                                  std::string_view utf8, const ShapeOptions& shape,
                                  const LayoutOptions& layout);
