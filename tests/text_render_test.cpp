@@ -1,0 +1,199 @@
+// TextRenderer: rendered lines against golden images, the cache across renders, LCD output,
+// colours, determinism across threads, and errors.
+//
+// Goldens: tests/golden/text/<name>.png, 8-bit gray (black text on white, so gray loses
+// nothing). Tolerance: max |difference| <= 2 levels per pixel — room for a rasterizer or
+// flattening change of a rounding step, far below any change of placement or shaping (a glyph
+// moved by a quarter pixel changes its edge pixels by ~64). BEZEL_UPDATE_GOLDEN=1 rewrites them.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "bezel/text.hpp"
+
+namespace bezel {
+namespace {
+
+const std::string kDejaVu = BEZEL_FONTS_DIR "/dejavu-sans/DejaVuSans.ttf";
+const std::string kCantarell = BEZEL_FONTS_DIR "/cantarell/Cantarell-Regular.otf";
+constexpr int kGoldenTolerance = 2;
+
+Mask luma_of(const Image& image) {
+    Mask m(image.width(), image.height());
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const Rgba8& p = image.at(x, y);
+            EXPECT_TRUE(p.r == p.g && p.g == p.b) << "not gray at " << x << "," << y;
+            m.at(x, y) = p.r;
+        }
+    return m;
+}
+
+void expect_matches_golden(const Image& image, const std::string& name) {
+    const std::string file = std::string(BEZEL_GOLDEN_DIR) + "/text/" + name + ".png";
+    Mask got = luma_of(image);
+    if (std::getenv("BEZEL_UPDATE_GOLDEN")) {
+        ASSERT_TRUE(write_png_gray(file, got.view()));
+        return;
+    }
+    auto golden = read_png_gray(file);
+    ASSERT_TRUE(golden) << golden.error().message << " (BEZEL_UPDATE_GOLDEN=1 creates it)";
+    ASSERT_EQ(golden->width(), got.width()) << name;
+    ASSERT_EQ(golden->height(), got.height()) << name;
+    int worst = 0;
+    for (int y = 0; y < got.height(); ++y)
+        for (int x = 0; x < got.width(); ++x)
+            worst = std::max(worst, std::abs(golden->at(x, y) - got.at(x, y)));
+    EXPECT_LE(worst, kGoldenTolerance) << name;
+}
+
+TextRenderOptions line_options(double size) {
+    TextRenderOptions o;
+    o.shape.size_px = size;
+    o.layout.margin_px = 4;
+    return o;
+}
+
+TEST(TextRenderer, LinesMatchGoldenImages) {
+    auto dejavu = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(dejavu) << dejavu.error().message;
+    auto image = dejavu->render("Hamburgefonstiv AV Wa To office", line_options(24));
+    ASSERT_TRUE(image) << image.error().message;
+    expect_matches_golden(*image, "dejavu_line_24");
+
+    TextRenderOptions wrapped = line_options(13);
+    wrapped.layout.width_px = 160;
+    wrapped.layout.align = Align::Center;
+    image = dejavu->render("Small text wraps at spaces and centres each line of the paragraph.",
+                           wrapped);
+    ASSERT_TRUE(image) << image.error().message;
+    expect_matches_golden(*image, "dejavu_wrapped_13_center");
+
+    auto cantarell = TextRenderer::open(kCantarell);
+    ASSERT_TRUE(cantarell) << cantarell.error().message;
+    image = cantarell->render("Cubic outlines: &@Qg 0123", line_options(20));
+    ASSERT_TRUE(image) << image.error().message;
+    expect_matches_golden(*image, "cantarell_line_20");
+}
+
+TEST(TextRenderer, SecondRenderOfTheSameTextOnlyHitsTheCache) {
+    auto r = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(r);
+    const std::string text = "abracadabra abracadabra";
+    auto first = r->render(text, line_options(16));
+    ASSERT_TRUE(first);
+    GlyphCacheStats s1 = r->cache().stats();
+    EXPECT_GT(s1.misses, 0u);
+    EXPECT_GT(s1.hits, 0u);   // repeated letters at repeated bins
+    EXPECT_LT(s1.misses, text.size());
+    auto second = r->render(text, line_options(16));
+    ASSERT_TRUE(second);
+    GlyphCacheStats s2 = r->cache().stats();
+    EXPECT_EQ(s2.misses, s1.misses);
+    EXPECT_EQ(s2.hits, s1.hits + text.size());   // one glyph per character here (no ligature)
+    EXPECT_EQ(*first, *second);
+}
+
+TEST(TextRenderer, ColoursBackgroundAndTransparency) {
+    auto r = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(r);
+    TextRenderOptions o = line_options(20);
+    o.foreground = Rgba8{200, 30, 10, 255};
+    o.background = Rgba8{0, 0, 0, 0};
+    auto image = r->render("I", o);
+    ASSERT_TRUE(image);
+    EXPECT_EQ(image->at(0, 0), (Rgba8{0, 0, 0, 0}));   // the margin is background
+    // The stem of the I is fully covered somewhere: the exact foreground colour.
+    bool solid = false;
+    for (int y = 0; y < image->height(); ++y)
+        for (int x = 0; x < image->width(); ++x) solid |= image->at(x, y) == o.foreground;
+    EXPECT_TRUE(solid);
+}
+
+TEST(TextRenderer, LcdModeHasColourFringesAndTheSameInk) {
+    auto r = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(r);
+    TextRenderOptions o = line_options(16);
+    auto gray = r->render("olive", o);
+    o.mode = RenderMode::LcdRgb;
+    auto lcd = r->render("olive", o);
+    ASSERT_TRUE(gray && lcd) << (lcd ? "" : lcd.error().message);
+    ASSERT_EQ(gray->width(), lcd->width());
+    int fringes = 0;
+    double ink_gray = 0, ink_lcd = 0;
+    for (int y = 0; y < lcd->height(); ++y)
+        for (int x = 0; x < lcd->width(); ++x) {
+            const Rgba8& p = lcd->at(x, y);
+            fringes += p.r != p.b;
+            ink_lcd += 3 * 255 - p.r - p.g - p.b;
+            const Rgba8& q = gray->at(x, y);
+            ink_gray += 3 * 255 - q.r - q.g - q.b;
+        }
+    EXPECT_GT(fringes, 10);
+    EXPECT_NEAR(ink_lcd / ink_gray, 1.0, 0.15);
+}
+
+TEST(TextRenderer, SeparateRenderersOnFourThreadsAgree) {
+    const std::string text = "Threads share nothing: each has its own Font, Shaper and cache.\n"
+                             "Second line, with kerning AV and ligatures fi.";
+    TextRenderOptions o = line_options(15);
+    o.layout.width_px = 300;
+    std::vector<Image> images(4);
+    std::vector<std::string> errors(4);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t)
+        threads.emplace_back([&, t] {
+            auto r = TextRenderer::open(kDejaVu);
+            if (!r) { errors[t] = r.error().message; return; }
+            for (int rep = 0; rep < 3; ++rep) {
+                auto image = r->render(text, o);
+                if (!image) { errors[t] = image.error().message; return; }
+                images[static_cast<std::size_t>(t)] = std::move(*image);
+            }
+        });
+    for (std::thread& t : threads) t.join();
+    for (int t = 0; t < 4; ++t) {
+        EXPECT_EQ(errors[static_cast<std::size_t>(t)], "");
+        EXPECT_EQ(images[static_cast<std::size_t>(t)], images[0]) << "thread " << t;
+    }
+    EXPECT_GT(images[0].width(), 0);
+}
+
+TEST(TextRenderer, ErrorsNameTheInput) {
+    auto missing = TextRenderer::open("/nonexistent/font.ttf");
+    ASSERT_FALSE(missing);
+    EXPECT_NE(missing.error().message.find("/nonexistent/font.ttf"), std::string::npos);
+
+    auto r = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(r);
+    auto bad_utf8 = r->render("ok \xff", line_options(16));
+    ASSERT_FALSE(bad_utf8);
+    EXPECT_NE(bad_utf8.error().message.find("byte 3"), std::string::npos) << bad_utf8.error().message;
+    auto zero = r->render("x", line_options(0));
+    EXPECT_FALSE(zero);
+    // A page past the pixel bound is refused before any pixel is allocated.
+    TextRenderOptions huge = line_options(16);
+    huge.layout.margin_px = 20000;
+    auto too_big = r->render("x", huge);
+    ASSERT_FALSE(too_big);
+    EXPECT_NE(too_big.error().message.find("too large"), std::string::npos);
+    TextRenderOptions axes = line_options(16);
+    axes.shape.variations = {{"wght", 700}};
+    EXPECT_FALSE(r->render("x", axes));   // DejaVu Sans has no axes
+}
+
+TEST(TextRenderer, EmptyTextIsABackgroundPage) {
+    auto r = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(r);
+    auto image = r->render("", line_options(16));
+    ASSERT_TRUE(image) << image.error().message;
+    EXPECT_GE(image->width(), 1);
+    for (int y = 0; y < image->height(); ++y)
+        for (int x = 0; x < image->width(); ++x) ASSERT_EQ(image->at(x, y), (Rgba8{255, 255, 255, 255}));
+}
+
+}  // namespace
+}  // namespace bezel
