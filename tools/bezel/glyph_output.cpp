@@ -1,0 +1,184 @@
+// `bezel glyph`'s output formats: ASCII art, the JSON contract, and one picture (PNG, PGM/PPM)
+// of all glyphs side by side.
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "bezel/image.hpp"
+#include "cli_common.hpp"
+#include "glyph_bitmap.hpp"
+
+namespace bezel::cli {
+
+namespace {
+
+std::string char_label(const GlyphBitmap& g) {
+    if (!g.code_point) return "";
+    std::string utf8;
+    append_utf8(utf8, *g.code_point);
+    // Control and space characters print as their code point only.
+    if (*g.code_point <= 0x20 || *g.code_point == 0x7F) return " " + format_code_point(*g.code_point);
+    return " '" + utf8 + "' " + format_code_point(*g.code_point);
+}
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+// Nine steps of ink after the blank: any nonzero coverage shows.
+constexpr char kRamp[] = " .:-=+*#%@";
+char ramp(std::uint8_t v) { return v == 0 ? ' ' : kRamp[1 + (v - 1) * 9 / 255]; }
+
+// The common picture: glyph i's column offset, and the baseline row.
+struct Layout {
+    int width = 0, height = 0, baseline = 0;
+    std::vector<int> x;
+};
+
+Layout layout(const std::vector<GlyphBitmap>& glyphs) {
+    Layout l;
+    int above = 0, below = 0;
+    bool any = false;
+    for (const GlyphBitmap& g : glyphs) {
+        if (g.width == 0 || g.height == 0) continue;
+        above = any ? std::max(above, g.top) : g.top;
+        below = any ? std::max(below, g.height - g.top) : g.height - g.top;
+        any = true;
+    }
+    l.baseline = above;
+    l.height = any ? above + below : 0;
+    for (const GlyphBitmap& g : glyphs) {
+        if (l.width > 0 && g.width > 0) l.width += 1;  // one empty column between glyphs
+        l.x.push_back(l.width);
+        l.width += g.width;
+    }
+    return l;
+}
+
+// Copies every glyph's bytes into one image, `bpp` bytes per pixel, background 0.
+Expected<std::vector<std::uint8_t>> compose(const std::vector<GlyphBitmap>& glyphs, Layout& l,
+                                            int bpp) {
+    l = layout(glyphs);
+    if (l.width == 0 || l.height == 0)
+        return Error{"every glyph is empty: there is no picture to write"};
+    std::vector<std::uint8_t> px(static_cast<std::size_t>(l.width) * bpp * l.height, 0);
+    for (std::size_t i = 0; i < glyphs.size(); ++i) {
+        const GlyphBitmap& g = glyphs[i];
+        const int row0 = l.baseline - g.top;
+        for (int y = 0; y < g.height; ++y)
+            std::copy_n(g.pixels.data() + static_cast<std::size_t>(y) * g.width * bpp,
+                        static_cast<std::size_t>(g.width) * bpp,
+                        px.data() + (static_cast<std::size_t>(row0 + y) * l.width + l.x[i]) * bpp);
+    }
+    return px;
+}
+
+Image rgb_image(const std::vector<std::uint8_t>& px, int w, int h) {
+    Image img(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::uint8_t* p = px.data() + (static_cast<std::size_t>(y) * w + x) * 3;
+            img.at(x, y) = Rgba8{p[0], p[1], p[2], 255};
+        }
+    return img;
+}
+
+int picture_bpp(const std::vector<GlyphBitmap>& glyphs) {
+    return glyphs.empty() ? 1 : glyphs.front().bytes_per_pixel();
+}
+
+}  // namespace
+
+std::string ascii_art(ConstMaskView mask) {
+    std::string out;
+    for (int y = 0; y < mask.height; ++y) {
+        std::string line;
+        for (int x = 0; x < mask.width; ++x) line += ramp(mask.at(x, y));
+        while (!line.empty() && line.back() == ' ') line.pop_back();
+        out += "|" + line + "\n";
+    }
+    return out;
+}
+
+std::string glyphs_ascii(const std::vector<GlyphBitmap>& glyphs, const GlyphRenderSettings& s) {
+    std::string out;
+    for (const GlyphBitmap& g : glyphs) {
+        out += "glyph " + std::to_string(g.gid) + " " + g.name + char_label(g) + ", " +
+               number(s.size_px) + " px, " + mode_name(g.mode) + ": " + std::to_string(g.width) +
+               "x" + std::to_string(g.height) + ", left " + std::to_string(g.left) + ", top " +
+               std::to_string(g.top) + ", advance " + number(g.advance_px);
+        if (g.accurate_overlap) out += ", overlapping contours (accurate)";
+        if (g.mode != GlyphMode::Gray) out += " (one character per subpixel)";
+        out += "\n";
+        const int row_bytes = g.width * g.bytes_per_pixel();
+        out += ascii_art(ConstMaskView{g.pixels.data(), row_bytes, g.height, row_bytes});
+    }
+    return out;
+}
+
+std::string glyphs_json(const std::vector<GlyphBitmap>& glyphs, const GlyphRenderSettings& s) {
+    using nlohmann::ordered_json;
+    ordered_json arr = ordered_json::array();
+    static const char kHex[] = "0123456789abcdef";
+    for (const GlyphBitmap& g : glyphs) {
+        ordered_json o;
+        o["gid"] = g.gid;
+        o["name"] = g.name;
+        if (g.code_point) {
+            std::string utf8;
+            append_utf8(utf8, *g.code_point);
+            o["char"] = utf8;
+            o["code_point"] = format_code_point(*g.code_point);
+        }
+        o["size"] = s.size_px;
+        o["left"] = g.left;
+        o["top"] = g.top;
+        o["width"] = g.width;
+        o["height"] = g.height;
+        o["advance"] = g.advance_px;
+        o["mode"] = mode_name(g.mode);
+        o["overlap"] = g.accurate_overlap ? "accurate" : "accumulate";
+        ordered_json rows = ordered_json::array();
+        const int row_bytes = g.width * g.bytes_per_pixel();
+        for (int y = 0; y < g.height; ++y) {
+            std::string hex;
+            hex.reserve(static_cast<std::size_t>(row_bytes) * 2);
+            for (int x = 0; x < row_bytes; ++x) {
+                const std::uint8_t v = g.pixels[static_cast<std::size_t>(y) * row_bytes + x];
+                hex += kHex[v >> 4];
+                hex += kHex[v & 15];
+            }
+            rows.push_back(std::move(hex));
+        }
+        o["rows"] = std::move(rows);
+        arr.push_back(std::move(o));
+    }
+    return arr.dump(2) + "\n";
+}
+
+Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs) {
+    Layout l;
+    const int bpp = picture_bpp(glyphs);
+    auto px = compose(glyphs, l, bpp);
+    if (!px) return px.error();
+    auto png = bpp == 1 ? encode_png_gray(ConstMaskView{px->data(), l.width, l.height, l.width})
+                        : encode_png(rgb_image(*px, l.width, l.height), PngColor::Rgb);
+    if (!png) return png.error();
+    return std::string(png->begin(), png->end());
+}
+
+Expected<std::string> glyphs_pnm(const std::vector<GlyphBitmap>& glyphs) {
+    Layout l;
+    const int bpp = picture_bpp(glyphs);
+    auto px = compose(glyphs, l, bpp);
+    if (!px) return px.error();
+    const std::vector<std::uint8_t> bytes =
+        bpp == 1 ? encode_pgm(ConstMaskView{px->data(), l.width, l.height, l.width})
+                 : encode_ppm(rgb_image(*px, l.width, l.height));
+    return std::string(bytes.begin(), bytes.end());
+}
+
+}  // namespace bezel::cli
