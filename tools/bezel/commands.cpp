@@ -8,6 +8,9 @@ Command add_outline_command(CLI::App& app);
 Command add_intersect_command(CLI::App& app);
 Command add_smooth_command(CLI::App& app);
 Command add_continuity_command(CLI::App& app);
+Command add_glyph_command(CLI::App& app);
+Command add_fill_command(CLI::App& app);
+Command add_bench_command(CLI::App& app);
 Command add_surface_command(CLI::App& app);
 
 std::vector<Command> add_all_commands(CLI::App& app) {
@@ -18,6 +21,9 @@ std::vector<Command> add_all_commands(CLI::App& app) {
         add_intersect_command,
         add_smooth_command,
         add_continuity_command,
+        add_glyph_command,
+        add_fill_command,
+        add_bench_command,
         add_surface_command,
     };
     std::vector<Command> commands;
