@@ -29,7 +29,8 @@ LinearRgb linear(Rgba8 c) { return {srgb_to_linear(c.r), srgb_to_linear(c.g), sr
 Framebuffer::Framebuffer(int width, int height)
     : width_(width), height_(height),
       rgb_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height)),
-      cover_(rgb_.size(), 0.0f), depth_(rgb_.size(), HUGE_VALF) {}
+      cover_(rgb_.size(), 0.0f), depth_(rgb_.size(), HUGE_VALF), back_(rgb_.size()),
+      back_cover_(rgb_.size(), 0.0f) {}
 
 Image Framebuffer::resolve(Rgba8 background) const {
     Image out(width_, height_);
@@ -38,9 +39,12 @@ Image Framebuffer::resolve(Rgba8 background) const {
         Rgba8* row = out.row(y);
         for (int x = 0; x < width_; ++x) {
             std::size_t k = index(x, y);
-            float rest = 1.0f - cover_[k];
-            row[x] = {linear_to_srgb(rgb_[k].r + rest * bg.r), linear_to_srgb(rgb_[k].g + rest * bg.g),
-                      linear_to_srgb(rgb_[k].b + rest * bg.b), 255};
+            const float back_rest = 1.0f - back_cover_[k], rest = 1.0f - cover_[k];
+            const LinearRgb under{back_[k].r + back_rest * bg.r, back_[k].g + back_rest * bg.g,
+                                  back_[k].b + back_rest * bg.b};
+            row[x] = {linear_to_srgb(rgb_[k].r + rest * under.r),
+                      linear_to_srgb(rgb_[k].g + rest * under.g),
+                      linear_to_srgb(rgb_[k].b + rest * under.b), 255};
         }
     }
     return out;

@@ -35,25 +35,30 @@ public:
         cover_[k] += take;
     }
     // The same with a depth test that repairs the depth sort where it got the order wrong
-    // (pieces that interpenetrate, like the teapot's spout entering the body): a fragment nearer
-    // than everything drawn at the pixel by more than `margin` is composited "over" what is
-    // there instead of under it. Within `margin` (abutting triangles) it is plain saturating.
+    // (pieces that interpenetrate, like the teapot's spout entering the body). Each pixel keeps
+    // a front layer (composited by saturation, as above) over a back layer. A fragment nearer
+    // than the front layer's depth by more than `margin` pushes the front layer into the back
+    // (front over back) and starts a new front layer; anything else saturates into the front
+    // layer. So a later, nearer surface covers what the sort drew too early, and abutting
+    // triangles of that surface still add up without seams.
     void add_with_depth(int x, int y, float alpha, LinearRgb c, float depth, float margin) {
         std::size_t k = index(x, y);
         if (cover_[k] > 0.0f && depth < depth_[k] - margin) {
-            float keep = 1.0f - alpha;
-            rgb_[k].r = rgb_[k].r * keep + alpha * c.r;
-            rgb_[k].g = rgb_[k].g * keep + alpha * c.g;
-            rgb_[k].b = rgb_[k].b * keep + alpha * c.b;
-            cover_[k] = cover_[k] * keep + alpha;
+            float rest = 1.0f - cover_[k];
+            back_[k].r = rgb_[k].r + rest * back_[k].r;
+            back_[k].g = rgb_[k].g + rest * back_[k].g;
+            back_[k].b = rgb_[k].b + rest * back_[k].b;
+            back_cover_[k] = cover_[k] + rest * back_cover_[k];
+            rgb_[k] = {};
+            cover_[k] = 0.0f;
             depth_[k] = depth;
-            return;
+        } else {
+            depth_[k] = std::min(depth_[k], depth);
         }
-        depth_[k] = std::min(depth_[k], depth);
         add_saturating(x, y, alpha, c);
     }
     float cover(int x, int y) const { return cover_[index(x, y)]; }
-    // The picture over `background`: rgb + (1 − coverage)·background, encoded to sRGB, opaque.
+    // The picture: front over back over `background`, encoded to sRGB, opaque.
     Image resolve(Rgba8 background) const;
 
 private:
@@ -64,7 +69,9 @@ private:
     int width_, height_;
     std::vector<LinearRgb> rgb_;
     std::vector<float> cover_;
-    std::vector<float> depth_;  // nearest depth drawn at each pixel (add_with_depth only)
+    std::vector<float> depth_;        // front layer's nearest depth (add_with_depth only)
+    std::vector<LinearRgb> back_;     // back layer, premultiplied (add_with_depth only)
+    std::vector<float> back_cover_;
 };
 
 }  // namespace bezel::surface_detail
