@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "bezel/font.hpp"
 #include "bezel/image.hpp"
 #include "support/cli_run.hpp"
 
@@ -332,4 +333,65 @@ TEST_F(GlyphCli, ErrorsNameTheirInput) {
         EXPECT_TRUE(r.out.empty());
     }
     EXPECT_FALSE(std::filesystem::exists(scratch().path() / "a.bmp"));
+}
+
+// Font::render_with_freetype (what `bezel bench` times for FreeType) is FreeType's own render:
+// the same pixels as FT_Render_Glyph in FreeType's box, for any stride.
+TEST(RenderWithFreeType, EqualsFtRenderGlyphForAnyStride) {
+    auto font = bezel::Font::open(kDejaVu);
+    ASSERT_TRUE(font.ok());
+    FreeType ft(kDejaVu);
+    for (char32_t ch : std::u32string(U"Ag@\u00e9")) {
+        const bezel::GlyphId gid = *font->glyph_for_char(ch);
+        for (double size : {11.0, 30.0}) {
+            const FtBitmap b = ft.render(gid, size, 0.25, 0);
+            ASSERT_GT(b.width * b.rows, 0);
+            // Pen at (0.25 − left, top) from the bitmap's top-left corner, y down.
+            const bezel::Vec2 pen{0.25 - b.left, double(b.top)};
+            const int stride = b.width + 5;
+            std::vector<std::uint8_t> down(std::size_t(stride) * b.rows, 77);
+            ASSERT_TRUE(font->render_with_freetype(gid, {size, false},
+                                                   bezel::MaskView{down.data(), b.width, b.rows, stride},
+                                                   pen)
+                            .ok());
+            // Bottom-up memory: row 0 at the end, negative stride.
+            std::vector<std::uint8_t> up(std::size_t(b.width) * b.rows, 77);
+            const bezel::MaskView up_view{up.data() + std::size_t(b.rows - 1) * b.width, b.width,
+                                          b.rows, -b.width};
+            ASSERT_TRUE(font->render_with_freetype(gid, {size, false}, up_view, pen).ok());
+            for (int y = 0; y < b.rows; ++y) {
+                for (int x = 0; x < b.width; ++x) {
+                    const int want = b.px[std::size_t(y) * b.pitch + x];
+                    ASSERT_EQ(down[std::size_t(y) * stride + x], want) << x << "," << y;
+                    ASSERT_EQ(up_view.at(x, y), want) << x << "," << y;
+                }
+                EXPECT_EQ(down[std::size_t(y) * stride + b.width], 77);  // past the width: untouched
+            }
+        }
+    }
+}
+
+TEST(RenderWithFreeType, FollowsVariationsAndRejectsBadInput) {
+    // EdgeCasesVariable 'I': a bar whose right edge moves with wght, so the cached outline must
+    // not survive set_variations.
+    auto font = bezel::Font::open(std::string(BEZEL_FONTS_DIR) + "/edge-cases/EdgeCasesVariable.ttf");
+    ASSERT_TRUE(font.ok());
+    const bezel::GlyphId gid = *font->glyph_for_char('I');
+    bezel::Mask regular(40, 40), black(40, 40);
+    ASSERT_TRUE(font->render_with_freetype(gid, {40, false}, regular.view(), {0, 35}).ok());
+    ASSERT_TRUE(font->set_variations({{"wght", 900}}).ok());
+    ASSERT_TRUE(font->render_with_freetype(gid, {40, false}, black.view(), {0, 35}).ok());
+    // The bar spans x 4..12 px at wght 400 and 4..20 at 900.
+    EXPECT_EQ(regular.at(15, 20), 0);
+    EXPECT_EQ(black.at(15, 20), 255);
+    bezel::Mask m(8, 8);
+    EXPECT_FALSE(font->render_with_freetype(99, {12, false}, m.view(), {0, 0}).ok());
+    EXPECT_FALSE(font->render_with_freetype(gid, {0, false}, m.view(), {0, 0}).ok());
+    EXPECT_FALSE(font->render_with_freetype(gid, {12, false}, m.view(), {NAN, 0}).ok());
+    EXPECT_FALSE(font->render_with_freetype(gid, {12, false}, bezel::MaskView{nullptr, 8, 8, 8},
+                                            {0, 0})
+                     .ok());
+    EXPECT_FALSE(font->render_with_freetype(gid, {12, false}, bezel::MaskView{m.view().data, 8, 8, 4},
+                                            {0, 0})
+                     .ok());
 }
