@@ -59,6 +59,12 @@ Expected<std::vector<Vec2>> cardinal_tangents(const std::vector<Point>& points, 
         const Point prev = closed ? p[(i + n - 1) % n] : (i == 0 ? p[0] * 2.0 - p[1] : p[i - 1]);
         const Point next = closed ? p[(i + 1) % n] : (i + 1 == n ? p[n - 1] * 2.0 - p[n - 2] : p[i + 1]);
         t[i] = (next - prev) * tension;
+        // A finite τ can still overflow (τ = 1e308 times a span of 2): an error, like every
+        // other overflow here, never an infinite tangent.
+        if (!std::isfinite(t[i].x) || !std::isfinite(t[i].y))
+            return method_error(kCardinal, "tension " + std::to_string(tension) +
+                                               " overflows the tangent at points[" +
+                                               std::to_string(i) + "]");
     }
     return t;
 }
