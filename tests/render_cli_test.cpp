@@ -1,0 +1,130 @@
+// `bezel render` end to end: the default sample to PNG, formats from the file name, the same
+// pixels as the library, PNG colour types, and bad input (one error line, exit 1 or 2, no file).
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "bezel/text.hpp"
+#include "support/cli_run.hpp"
+
+namespace bezel {
+namespace {
+
+using test::run_bezel;
+using test::slurp;
+using test::TempDir;
+
+const std::string kDejaVu = BEZEL_FONTS_DIR "/dejavu-sans/DejaVuSans.ttf";
+
+TEST(RenderCli, DefaultsRenderTheSampleParagraphToPng) {
+    TempDir dir("bezel-render-cli");
+    auto run = run_bezel({"render", "-o", "hello.png"}, dir.path());
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.out, "");
+    auto png = read_png_gray((dir.path() / "hello.png").string());
+    ASSERT_TRUE(png) << png.error().message;
+    // Three lines of 20 px text with 16 px margins.
+    EXPECT_GT(png->width(), 300);
+    EXPECT_GT(png->height(), 3 * 20);
+    int dark = 0;
+    for (std::uint8_t v : png->pixels()) dark += v < 64;
+    EXPECT_GT(dark, 500);
+    std::string bytes = slurp(dir.path() / "hello.png");
+    EXPECT_EQ(bytes[25], 0) << "black on white is written as gray PNG";
+}
+
+TEST(RenderCli, PixelsEqualTheLibrarysAndFormatFollowsTheFileName) {
+    TempDir dir("bezel-render-cli");
+    auto run = run_bezel({"render", kDejaVu, "Kerning AV", "--font-size", "24", "--margin", "3",
+                          "--foreground", "#203040", "-o", "line.ppm"},
+                         dir.path());
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    auto renderer = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(renderer);
+    TextRenderOptions o;
+    o.shape.size_px = 24;
+    o.layout.margin_px = 3;
+    o.foreground = Rgba8{0x20, 0x30, 0x40, 255};
+    auto image = renderer->render("Kerning AV", o);
+    ASSERT_TRUE(image);
+    auto ppm = encode_ppm(*image);
+    EXPECT_EQ(slurp(dir.path() / "line.ppm"), std::string(ppm.begin(), ppm.end()));
+
+    run = run_bezel({"render", "--text", "x", "-o", "x.pgm"}, dir.path());
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(slurp(dir.path() / "x.pgm").substr(0, 3), "P5\n");
+    run = run_bezel({"render", kDejaVu, "x", "-O", "ansi"}, dir.path());
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.out.find("\x1b[38;2;"), std::string::npos);
+    EXPECT_NE(run.out.find("\xe2\x96\x80"), std::string::npos);
+}
+
+TEST(RenderCli, PngColourTypeFollowsTheColours) {
+    TempDir dir("bezel-render-cli");
+    const std::pair<std::vector<std::string>, int> cases[] = {
+        {{"--foreground", "red"}, 2},
+        {{"--background", "transparent"}, 6},
+        {{"--lcd", "rgb"}, 2},
+        {{"--foreground", "#444"}, 0},
+    };
+    for (const auto& [extra, type] : cases) {
+        std::vector<std::string> args = {"render", "--text", "Aa", "-o", "c.png"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        auto run = run_bezel(args, dir.path());
+        ASSERT_EQ(run.exit_code, 0) << run.err;
+        EXPECT_EQ(slurp(dir.path() / "c.png")[25], type) << extra[0] << " " << extra[1];
+    }
+}
+
+struct BadCase {
+    std::vector<std::string> args;
+    int exit_code;
+    std::string mention;   // the error line names this
+};
+
+TEST(RenderCli, BadInputGivesOneErrorLineAndNoFile) {
+    TempDir dir("bezel-render-cli");
+    {
+        std::FILE* f = std::fopen((dir.path() / "bad.txt").c_str(), "wb");
+        ASSERT_NE(f, nullptr);
+        std::fputs("fine\n\xc3\x28 broken", f);
+        std::fclose(f);
+    }
+    const BadCase cases[] = {
+        {{"render", "/nonexistent/font.ttf", "x", "-o", "out.png"}, 1, "/nonexistent/font.ttf"},
+        {{"render", kDejaVu, "x", "--features", "kern[", "-o", "out.png"}, 2, "kern["},
+        {{"render", kDejaVu, "x", "--foreground", "#12", "-o", "out.png"}, 2, "#12"},
+        {{"render", kDejaVu, "x", "--background", "mauve", "-o", "out.png"}, 2, "mauve"},
+        {{"render", kDejaVu, "x", "--font-size", "0", "-o", "out.png"}, 2, "--font-size"},
+        {{"render", kDejaVu, "x", "--font-size", "1e9", "-o", "out.png"}, 2, "--font-size"},
+        {{"render", kDejaVu, "--text-file", "bad.txt", "-o", "out.png"}, 1, "bad.txt"},
+        {{"render", kDejaVu, "--text-file", "missing.txt", "-o", "out.png"}, 1, "missing.txt"},
+        {{"render", kDejaVu, "x", "-o", "out.gif"}, 2, "out.gif"},
+        {{"render", kDejaVu, "x", "--direction", "up", "-o", "out.png"}, 2, "up"},
+        {{"render", kDejaVu, "x", "--text", "y", "-o", "out.png"}, 2, "once"},
+        {{"render", kDejaVu, "x", "--margin", "30000", "--font-size", "300", "-o", "out.png"}, 1,
+         "too large"},
+        {{"render", kDejaVu, "x", "--variations", "wght=700", "-o", "out.png"}, 1, "wght"},
+    };
+    for (const BadCase& c : cases) {
+        auto run = run_bezel(c.args, dir.path());
+        std::string joined;
+        for (const std::string& a : c.args) joined += a + " ";
+        EXPECT_EQ(run.exit_code, c.exit_code) << joined << "\n" << run.err;
+        // One error line (usage errors add a second line pointing at --help).
+        std::string first = run.err.substr(0, run.err.find('\n'));
+        EXPECT_EQ(first.rfind("bezel: ", 0), 0u) << joined << "\n" << run.err;
+        EXPECT_NE(first.find(c.mention), std::string::npos) << joined << "\n" << run.err;
+        int error_lines = 0;
+        for (std::size_t at = run.err.find("bezel: "); at != std::string::npos;
+             at = run.err.find("bezel: ", at + 1))
+            error_lines += at == 0 || run.err[at - 1] == '\n';
+        EXPECT_EQ(error_lines, 1) << joined << "\n" << run.err;
+        EXPECT_EQ(run.out, "") << joined;
+        EXPECT_EQ(dir.entries(), std::vector<std::string>{"bad.txt"}) << joined;
+    }
+}
+
+}  // namespace
+}  // namespace bezel

@@ -1,0 +1,149 @@
+// `bezel atlas`: the glyphs of a set of characters rendered once and packed into one coverage
+// texture (gray PNG: value = coverage, 0 = empty), with JSON that tells a toolkit where each
+// glyph is and how to place it:
+//
+// {
+//   "font": file, "size_px": number, "width": px, "height": px, "padding": px,
+//   "glyphs": [{"char": string, "code_point": "U+XXXX", "gid": int,
+//               "x", "y", "width", "height": the texture rectangle (px, y down),
+//               "left", "top": bitmap offset from the pen (FreeType's bitmap_left / bitmap_top),
+//               "advance": px}]
+// }
+//
+// A glyph's pixel (i, j) goes at (pen_x + left + i, pen_y − top + j) on the page. Glyphs are
+// rendered unhinted at a whole-pixel pen, exactly as GlyphRasterizer renders them.
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "atlas_pack.hpp"
+#include "bezel/text.hpp"
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "font_args.hpp"
+
+namespace bezel::cli {
+namespace {
+
+constexpr const char* kCommand = "bezel atlas";
+constexpr double kDefaultAtlasSizePx = 32.0;
+// Distinct characters one atlas takes: all of a large CJK set, still a bounded amount of work
+// (the texture side limit kMaxImageDim bounds the pixels).
+constexpr std::size_t kMaxAtlasChars = 1u << 16;
+
+struct AtlasArgs {
+    FontArgs font;
+    std::string chars;
+    std::string output_file;   // -o: the PNG
+    std::string json_file;     // --json (default: stdout)
+    CLI::App* cmd = nullptr;
+};
+
+struct Entry {
+    char32_t code_point;
+    GlyphId gid;
+    GlyphBox box;
+};
+
+int run_atlas(AtlasArgs& args) {
+    if (args.cmd->count("--hinting") > 0)
+        return fail_usage("--hinting: atlas glyphs are rendered unhinted", kCommand);
+    if (auto ok = check_font_size(args.font); !ok) return fail_usage(ok.error().message, kCommand);
+    if (args.output_file == "-" && (args.json_file.empty() || args.json_file == "-"))
+        return fail_usage("-o - and the JSON cannot both go to stdout (give --json FILE)", kCommand);
+    auto code_points = decode_utf8(args.chars);
+    if (!code_points) return fail_usage("--chars: " + code_points.error().message, kCommand);
+    std::u32string distinct;
+    for (char32_t c : *code_points)
+        if (distinct.find(c) == std::u32string::npos) distinct.push_back(c);
+    if (distinct.empty()) return fail_usage("--chars: no characters given", kCommand);
+    if (distinct.size() > kMaxAtlasChars)
+        return fail_usage("--chars: more than " + std::to_string(kMaxAtlasChars) +
+                              " distinct characters",
+                          kCommand);
+
+    auto font = open_font(args.font);
+    if (!font) return fail_runtime(font.error().message);
+    GlyphRasterizer rasterizer(*font);
+    GlyphRenderOptions options;
+    options.size_px = args.font.size_px;
+
+    std::vector<Entry> entries;
+    std::vector<AtlasRect> sizes;
+    for (char32_t c : distinct) {
+        auto gid = font->glyph_for_char(c);
+        if (!gid)
+            return fail_runtime(args.font.file + ": no glyph for " + format_code_point(c) +
+                                " (--chars)");
+        auto box = rasterizer.measure(*gid, options);
+        if (!box) return fail_runtime(box.error().message);
+        entries.push_back({c, *gid, *box});
+        sizes.push_back({0, 0, box->width, box->height});
+    }
+    auto packing = pack_shelves(sizes, kMaxImageDim);
+    if (!packing) return fail_runtime(packing.error().message);
+
+    Mask texture(packing->width, packing->height);
+    nlohmann::ordered_json glyphs = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        const Entry& e = entries[i];
+        const AtlasRect& r = packing->rects[i];
+        if (r.width > 0) {
+            auto drawn = rasterizer.render(e.gid, options, texture.view().sub(r.x, r.y, r.width, r.height));
+            if (!drawn) return fail_runtime(drawn.error().message);
+        }
+        std::string utf8;
+        append_utf8(utf8, e.code_point);
+        glyphs.push_back({{"char", utf8},          {"code_point", format_code_point(e.code_point)},
+                          {"gid", e.gid},          {"x", r.x},
+                          {"y", r.y},              {"width", r.width},
+                          {"height", r.height},    {"left", e.box.left},
+                          {"top", e.box.top},      {"advance", e.box.advance}});
+    }
+    nlohmann::ordered_json doc = {{"font", args.font.file},
+                                  {"size_px", args.font.size_px},
+                                  {"width", packing->width},
+                                  {"height", packing->height},
+                                  {"padding", kAtlasPaddingPx},
+                                  {"glyphs", std::move(glyphs)}};
+
+    auto png = encode_png_gray(texture.view());
+    if (!png) return fail_runtime(args.output_file + ": " + png.error().message);
+    // The JSON is written last: a toolkit that sees it can rely on the texture beside it.
+    auto written = write_output(args.output_file, std::string(png->begin(), png->end()));
+    if (!written) return fail_runtime(written.error().message);
+    written = write_output(args.json_file, doc.dump(2) + "\n");
+    if (!written) return fail_runtime(written.error().message);
+    return kExitOk;
+}
+
+}  // namespace
+
+Command add_atlas_command(CLI::App& app) {
+    auto args = std::make_shared<AtlasArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "atlas", "Pack the glyphs of some characters into a texture, with JSON metrics");
+    args->cmd = cmd;
+    args->font.size_px = kDefaultAtlasSizePx;
+    cmd->footer(
+        "The texture is a gray PNG of coverage (0 empty, 255 full), shelf-packed with 1 px of\n"
+        "padding, its width a power of two, its height tight. The JSON lists per character its\n"
+        "gid, texture rectangle x/y/width/height, bitmap left/top (as FreeType) and advance.\n"
+        "Example:\n"
+        "  bezel atlas --chars 'abcdefghijklmnopqrstuvwxyz' --font-size 24 -o atlas.png "
+        "--json atlas.json");
+    add_font_args(*cmd, args->font);
+    cmd->add_option("--chars", args->chars, "The characters (UTF-8); repeats are packed once")
+        ->required()
+        ->type_name("STRING");
+    cmd->add_option("-o,--output-file", args->output_file, "The texture, a gray PNG")
+        ->required()
+        ->type_name("FILE");
+    cmd->add_option("--json", args->json_file, "The metrics as JSON (default: stdout)")
+        ->type_name("FILE");
+    return Command{cmd, [args] { return run_atlas(*args); }};
+}
+
+}  // namespace bezel::cli

@@ -1,0 +1,219 @@
+// `bezel render`: a paragraph of text to a picture — shaped by HarfBuzz, laid out (newlines,
+// wrapping, alignment), rasterized through the glyph cache and blended in linear light — as PNG,
+// PGM, PPM or an ANSI preview for the terminal. Options follow hb-view where they overlap.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <memory>
+
+#include "bezel/text.hpp"
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "font_args.hpp"
+#include "render_output.hpp"
+#include "sample_text.hpp"
+
+namespace bezel::cli {
+namespace {
+
+constexpr const char* kCommand = "bezel render";
+// A paragraph size: body text on a screen is 13-20 px; 20 px keeps the README picture legible.
+// (hb-view's 256 px default suits one word, not a paragraph.)
+constexpr double kDefaultRenderSizePx = 20.0;
+// Terminal previews draw one pixel per column and two per row, so glyphs are 10 px tall (five
+// rows) unless --font-size says otherwise, and lines wrap at the terminal's width.
+constexpr double kDefaultPreviewSizePx = 10.0;
+constexpr double kDefaultMarginPx = 16.0;   // hb-view's default margin
+constexpr double kDefaultPreviewMarginPx = 1.0;
+
+struct RenderArgs {
+    FontArgs font;
+    std::string text;           // TEXT or --text
+    std::string text_file;      // --text-file
+    std::string features;       // --features
+    std::string direction;      // --direction
+    std::string script;         // --script
+    std::string language;       // --language
+    double width_px = 0;        // --width
+    double margin_px = kDefaultMarginPx;
+    double line_height = 0;     // --line-height
+    std::string align = "start";
+    std::string foreground = "#000000";
+    std::string background = "#FFFFFF";
+    std::string lcd;            // --lcd rgb|bgr
+    std::string format;         // -O
+    std::string output_file;    // -o
+    CLI::App* cmd = nullptr;
+};
+
+Expected<Direction> parse_direction(const std::string& name) {
+    if (name.empty() || name == "auto") return Direction::Auto;
+    if (name == "ltr") return Direction::LeftToRight;
+    if (name == "rtl") return Direction::RightToLeft;
+    if (name == "ttb") return Direction::TopToBottom;
+    if (name == "btt") return Direction::BottomToTop;
+    return Error{"--direction '" + name + "': expected ltr, rtl, ttb, btt or auto"};
+}
+
+// The --text-file contents ('-': stdin), at most kMaxTextBytes, valid UTF-8, one trailing newline
+// dropped (as hb-view does, so a file's last line does not add an empty one).
+Expected<std::string> read_text_file(const std::string& file) {
+    std::string text;
+    std::FILE* f = file == "-" ? stdin : std::fopen(file.c_str(), "rb");
+    if (!f) return Error{file + ": cannot open file"};
+    char buffer[65536];
+    std::size_t n;
+    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) {
+        text.append(buffer, n);
+        if (text.size() > kMaxTextBytes) break;
+    }
+    bool failed = std::ferror(f) != 0;
+    if (f != stdin) std::fclose(f);
+    if (failed) return Error{file + ": read failed"};
+    if (text.size() > kMaxTextBytes)
+        return Error{file + ": longer than " + std::to_string(kMaxTextBytes) + " bytes"};
+    if (auto valid = decode_utf8(text); !valid) return Error{file + ": " + valid.error().message};
+    if (!text.empty() && text.back() == '\n') text.pop_back();
+    if (!text.empty() && text.back() == '\r') text.pop_back();
+    return text;
+}
+
+int run_render(RenderArgs& args) {
+    const bool tty = ::isatty(STDOUT_FILENO) != 0;
+    auto format = pick_page_format(args.format, args.output_file, tty);
+    if (!format) return fail_usage(format.error().message, kCommand);
+    const bool preview = *format == PageFormat::Ansi;
+    const int columns = preview ? terminal_columns() : 0;
+
+    if (args.cmd->count("--hinting") > 0)
+        return fail_usage("--hinting: render draws unhinted outlines (subpixel-positioned)", kCommand);
+    if (preview && args.cmd->count("--font-size") == 0) args.font.size_px = kDefaultPreviewSizePx;
+    if (auto ok = check_font_size(args.font); !ok) return fail_usage(ok.error().message, kCommand);
+    if (args.cmd->count("TEXT") + args.cmd->count("--text") + args.cmd->count("--text-file") > 1)
+        return fail_usage("give the text once: TEXT, --text or --text-file", kCommand);
+
+    TextRenderOptions options;
+    options.shape.size_px = args.font.size_px;
+    auto features = parse_features(args.features);
+    if (!features) return fail_usage("--features: " + features.error().message, kCommand);
+    options.shape.features = std::move(*features);
+    auto variations = parse_variations(args.font.variations);
+    if (!variations) return fail_usage(variations.error().message, kCommand);
+    options.shape.variations = std::move(*variations);
+    auto direction = parse_direction(args.direction);
+    if (!direction) return fail_usage(direction.error().message, kCommand);
+    options.shape.direction = *direction;
+    options.shape.script = args.script;
+    options.shape.language = args.language;
+
+    auto fg = parse_color(args.foreground);
+    if (!fg) return fail_usage("--foreground: " + fg.error().message, kCommand);
+    auto bg = parse_color(args.background);
+    if (!bg) return fail_usage("--background: " + bg.error().message, kCommand);
+    options.foreground = *fg;
+    options.background = *bg;
+    options.mode = args.lcd.empty() ? RenderMode::Gray
+                   : args.lcd == "bgr" ? RenderMode::LcdBgr
+                                       : RenderMode::LcdRgb;
+
+    if (preview && args.cmd->count("--margin") == 0) args.margin_px = kDefaultPreviewMarginPx;
+    options.layout.margin_px = args.margin_px;
+    options.layout.width_px = args.width_px;
+    if (preview && args.cmd->count("--width") == 0 && columns > 0)
+        options.layout.width_px = std::max(1.0, columns - 2 * args.margin_px);
+    options.layout.line_height = args.line_height;
+    options.layout.align = args.align == "center" ? Align::Center
+                           : args.align == "end"  ? Align::End
+                                                  : Align::Start;
+
+    std::string text = kSampleText;
+    if (args.cmd->count("--text-file") > 0) {
+        auto read = read_text_file(args.text_file);
+        if (!read) return fail_runtime(read.error().message);
+        text = std::move(*read);
+    } else if (args.cmd->count("TEXT") + args.cmd->count("--text") > 0) {
+        text = args.text;
+    }
+
+    auto renderer = TextRenderer::open(args.font.file, args.font.face_index);
+    if (!renderer) return fail_runtime(renderer.error().message);
+    auto page = renderer->render(text, options);
+    if (!page) return fail_runtime(page.error().message);
+
+    const bool gray = options.mode == RenderMode::Gray && fg->r == fg->g && fg->g == fg->b &&
+                      bg->r == bg->g && bg->g == bg->b;
+    const bool alpha = fg->a != 255 || bg->a != 255;
+    auto bytes = encode_page(*page, *format, gray && !alpha, alpha, columns);
+    if (!bytes) return fail_runtime((args.output_file.empty() ? "<stdout>" : args.output_file) +
+                                    ": " + bytes.error().message);
+    auto written = write_output(args.output_file, *bytes);
+    if (!written) return fail_runtime(written.error().message);
+    return kExitOk;
+}
+
+}  // namespace
+
+Command add_render_command(CLI::App& app) {
+    auto args = std::make_shared<RenderArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "render", "Render a paragraph of text to PNG, PGM, PPM or a terminal preview");
+    args->cmd = cmd;
+    args->font.size_px = kDefaultRenderSizePx;
+    cmd->footer(
+        "With no TEXT, a sample paragraph. With no -o, PNG to stdout, or an ANSI preview when\n"
+        "stdout is a terminal (then --font-size defaults to 10, --margin to 1 and lines wrap at\n"
+        "the terminal's width). Colours: #RRGGBB, #RRGGBBAA, #RGB, #RGBA or black, white, red,\n"
+        "green, blue, transparent. PNG is gray for gray-on-gray, RGBA for translucent colours.\n"
+        "Examples:\n"
+        "  bezel render -o hello.png\n"
+        "  bezel render DejaVuSans.ttf 'Wafer office' --font-size 48 --features=-liga -o w.png\n"
+        "  bezel render --text-file page.txt --width 640 --align center -o page.png\n"
+        "  bezel render -O ansi 'Hello'");
+    add_font_args(*cmd, args->font);
+    cmd->add_option("TEXT", args->text, "The text (UTF-8); default: a sample paragraph");
+    cmd->add_option("--text", args->text, "The text, as hb-view's --text")->type_name("STRING");
+    cmd->add_option("--text-file", args->text_file, "Read the text from a file ('-': stdin)")
+        ->type_name("FILE");
+    cmd->add_option("--features", args->features,
+                    "OpenType features, hb-view syntax: \"kern,-liga,+smcp,aalt=2\"")
+        ->type_name("LIST");
+    cmd->add_option("--direction", args->direction, "ltr, rtl, ttb, btt or auto (default: from the text)")
+        ->type_name("DIR");
+    cmd->add_option("--script", args->script, "ISO 15924 script tag, e.g. Arab (default: from the text)")
+        ->type_name("TAG");
+    cmd->add_option("--language", args->language, "BCP 47 language tag, e.g. ar")->type_name("TAG");
+    cmd->add_option("--width", args->width_px,
+                    "Wrap lines to this width in pixels (default: no wrapping, only the text's "
+                    "newlines)")
+        ->type_name("PX")
+        ->check(CLI::Range(0.0, static_cast<double>(kMaxImageDim)));
+    cmd->add_option("--margin", args->margin_px, "Margin on all four sides, pixels (default 16)")
+        ->type_name("PX")
+        ->check(CLI::Range(0.0, static_cast<double>(kMaxImageDim)));
+    cmd->add_option("--line-height", args->line_height,
+                    "Baseline distance as a multiple of the font's line height (default 1)")
+        ->type_name("X")
+        ->check(CLI::Range(0.0, 100.0));
+    cmd->add_option("--align", args->align, "start, center or end (default start)")
+        ->type_name("ALIGN")
+        ->check(CLI::IsMember({"start", "center", "end"}));
+    cmd->add_option("--foreground", args->foreground, "Text colour (default #000000)")
+        ->type_name("COLOR");
+    cmd->add_option("--background", args->background, "Page colour (default #FFFFFF)")
+        ->type_name("COLOR");
+    cmd->add_option("--lcd", args->lcd, "LCD subpixel rendering for rgb or bgr panels")
+        ->type_name("ORDER")
+        ->check(CLI::IsMember({"rgb", "bgr"}));
+    cmd->add_option("-O,--output-format", args->format,
+                    "png, pgm, ppm or ansi; default: from the -o file's extension")
+        ->type_name("FORMAT");
+    cmd->add_option("-o,--output-file", args->output_file,
+                    "Write here instead of stdout (atomically: no partial file on failure)")
+        ->type_name("FILE");
+    return Command{cmd, [args] { return run_render(*args); }};
+}
+
+}  // namespace bezel::cli

@@ -1,0 +1,62 @@
+#include "render_output.hpp"
+
+#include <sys/ioctl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+
+namespace bezel::cli {
+
+Expected<PageFormat> pick_page_format(const std::string& format_option,
+                                      const std::string& output_file, bool stdout_is_terminal) {
+    std::string name = format_option;
+    if (name.empty() && !output_file.empty() && output_file != "-") {
+        std::string ext = std::filesystem::path(output_file).extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        if (ext == ".png") name = "png";
+        else if (ext == ".pgm") name = "pgm";
+        else if (ext == ".ppm") name = "ppm";
+        else if (ext == ".ans" || ext == ".ansi") name = "ansi";
+        else
+            return Error{output_file + ": cannot tell the output format from the extension '" + ext +
+                         "' (use .png, .pgm, .ppm or .ans, or give -O)"};
+    }
+    if (name.empty()) return stdout_is_terminal ? PageFormat::Ansi : PageFormat::Png;
+    if (name == "png") return PageFormat::Png;
+    if (name == "pgm") return PageFormat::Pgm;
+    if (name == "ppm") return PageFormat::Ppm;
+    if (name == "ansi") return PageFormat::Ansi;
+    return Error{"-O '" + name + "': unknown output format (expected png, pgm, ppm or ansi)"};
+}
+
+int terminal_columns() {
+    if (!::isatty(STDOUT_FILENO)) return 0;
+    winsize ws{};
+    if (::ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0) return ws.ws_col;
+    if (const char* env = std::getenv("COLUMNS")) {
+        int n = std::atoi(env);
+        if (n > 0) return n;
+    }
+    return 80;
+}
+
+Expected<std::string> encode_page(const Image& page, PageFormat format, bool gray_ok,
+                                  bool has_alpha, int ansi_columns) {
+    auto bytes_of = [](const std::vector<std::uint8_t>& v) { return std::string(v.begin(), v.end()); };
+    switch (format) {
+        case PageFormat::Pgm: return bytes_of(encode_pgm(page));
+        case PageFormat::Ppm: return bytes_of(encode_ppm(page));
+        case PageFormat::Ansi: return encode_ansi(page, ansi_columns);
+        case PageFormat::Png: break;
+    }
+    PngColor color = has_alpha ? PngColor::Rgba : gray_ok ? PngColor::Gray : PngColor::Rgb;
+    auto png = encode_png(page, color);
+    if (!png) return png.error();
+    return bytes_of(*png);
+}
+
+}  // namespace bezel::cli

@@ -1,0 +1,28 @@
+// tools/bezel/render_output.hpp — how `bezel render` picks its output format and encodes a page.
+#pragma once
+
+#include <string>
+
+#include "bezel/expected.hpp"
+#include "bezel/image.hpp"
+
+namespace bezel::cli {
+
+enum class PageFormat { Png, Pgm, Ppm, Ansi };
+
+// -O wins; else the -o file's extension (.png, .pgm, .ppm, .ans/.ansi); else ANSI when stdout is
+// a terminal, PNG otherwise. An unknown extension is an error naming the file.
+Expected<PageFormat> pick_page_format(const std::string& format_option,
+                                      const std::string& output_file, bool stdout_is_terminal);
+
+// The terminal's width in columns when stdout is one (TIOCGWINSZ, else $COLUMNS, else 80);
+// 0 when stdout is not a terminal.
+int terminal_columns();
+
+// The page as the file's bytes. PNG picks the smallest layout that loses nothing: gray when both
+// colours are opaque grays (and the mode is not LCD), RGBA when either colour is translucent,
+// RGB otherwise. ANSI is box-filtered to `ansi_columns` (0 = no limit).
+Expected<std::string> encode_page(const Image& page, PageFormat format, bool gray_ok,
+                                  bool has_alpha, int ansi_columns);
+
+}  // namespace bezel::cli
