@@ -269,7 +269,8 @@ Polylines balanced_polyline(const Path& p, const Affine& m, double tol) {
 }
 
 TEST(RasterDirect, FillPathMatchesReferenceAndGeneralRouteOnRandomCurvedPaths) {
-    // Targets 1..90 px wide cover both regimes (dense up to 3 blocks per row, sparse beyond);
+    // Targets 1..220 px wide cover both regimes (dense up to kDenseBlocks blocks per row,
+    // sparse beyond);
     // transforms: axis-aligned (flipped or not) and rotated. Points keep a margin of 0.5 px from
     // the target border, beyond any balanced vertex's excursion (< tol), so the route draws
     // exactly the balanced polyline: the reference on that polyline is the oracle.
@@ -278,7 +279,7 @@ TEST(RasterDirect, FillPathMatchesReferenceAndGeneralRouteOnRandomCurvedPaths) {
     const double tol = kDefaultRasterTolerancePx;
     double worst_f = 0.0;
     for (int trial = 0; trial < 400; ++trial) {
-        const int w = 1 + static_cast<int>(rng() % 90), h = 1 + static_cast<int>(rng() % 90);
+        const int w = 1 + static_cast<int>(rng() % 220), h = 1 + static_cast<int>(rng() % 60);
         const Path p = random_curved_path(rng);
         Affine m;
         switch (trial % 3) {
@@ -346,12 +347,12 @@ TEST(RasterDirect, SteepEdgesInsideOneColumnMatchReference) {
         polygon({{{3.2, 0.3}, {3.9, 40.7}, {20.0, 40.7}, {20.0, 0.3}}}),
         polygon({{{3.9, 40.0}, {3.1, 1.0}, {0.0, 1.0}, {0.0, 40.0}}}),
         polygon({{{0.0, 2.5}, {0.6, 37.25}, {9.0, 20.0}}}),
-        polygon({{{63.0, 5.0}, {63.999, 39.5}, {64.0, 0.0}}}),  // 64 wide: the sparse regime
+        polygon({{{199.0, 5.0}, {199.999, 39.5}, {200.0, 0.0}}}),  // 200 wide: the sparse regime
         polygon({{{10.0, 0.0}, {10.0, 41.0}, {11.0, 41.0}, {11.0, 0.0}}}),
     };
     Rasterizer r;
     for (std::size_t c = 0; c < cases.size(); ++c) {
-        FloatImage f(64, 41), g(64, 41);
+        FloatImage f(200, 41), g(200, 41);
         ASSERT_TRUE(r.fill(cases[c], FillRule::NonZero, f.view()).ok());
         Path p;
         std::size_t start = 0;
@@ -362,7 +363,7 @@ TEST(RasterDirect, SteepEdgesInsideOneColumnMatchReference) {
             start = end;
         }
         ASSERT_TRUE(r.fill_path(p, Affine::identity(), FillRule::NonZero, g.view()).ok());
-        const std::vector<double> ref = reference_coverage(cases[c], FillRule::NonZero, 64, 41, {});
+        const std::vector<double> ref = reference_coverage(cases[c], FillRule::NonZero, 200, 41, {});
         for (std::size_t i = 0; i < ref.size(); ++i) {
             ASSERT_NEAR(f.px[i], ref[i], kFloatTol) << "case " << c << " pixel " << i;
             ASSERT_NEAR(g.px[i], ref[i], kFloatTol) << "case " << c << " pixel " << i;
@@ -641,6 +642,52 @@ TEST(RasterKernels, SimdSweepsMatchScalarOnRandomRows) {
                 for (int i = 0; i < n; ++i) {
                     ASSERT_NEAR(kf[i], sf[i], 1e-5) << k->name << " n " << n << " i " << i;
                     ASSERT_LE(std::abs(int(k8[i]) - int(s8[i])), 1) << k->name;
+                }
+            }
+        }
+    }
+}
+
+TEST(RasterKernels, DenseBandSweepsMatchScalarRowSweeps) {
+    // The dense kernels sum every block of every row in one call (no flags) and write rows
+    // out_stride apart; each row must equal the scalar row sweep, and acc must end all zero,
+    // guard cells included.
+    using namespace raster_detail;
+    std::vector<const SweepKernels*> kernels = {&scalar_kernels(), &sse2_kernels()};
+    if (avx2_kernels()) kernels.push_back(avx2_kernels());
+    std::mt19937 rng(1111);
+    std::uniform_real_distribution<float> delta(-1.0f, 1.0f);
+    for (int trial = 0; trial < 500; ++trial) {
+        const int n = 1 + static_cast<int>(rng() % 170), rows = 1 + static_cast<int>(rng() % 9);
+        const int stride = row_cells(n), out_stride = n + static_cast<int>(rng() % 5);
+        std::vector<float> band(static_cast<std::size_t>(stride) * rows, 0.0f);
+        for (float& v : band)
+            if (rng() % 3 == 0) v = delta(rng) * 1.5f;
+        for (int rule = 0; rule < 2; ++rule) {
+            std::vector<std::uint8_t> s8(static_cast<std::size_t>(n) * rows);
+            std::vector<float> sf(static_cast<std::size_t>(n) * rows);
+            for (int r = 0; r < rows; ++r) {
+                std::vector<float> a(band.begin() + r * stride, band.begin() + (r + 1) * stride);
+                std::vector<std::uint8_t> fl(static_cast<std::size_t>(row_blocks(n)), 0);
+                scalar_kernels().f32[rule](a.data(), fl.data(), n, sf.data() + r * n);
+                a.assign(band.begin() + r * stride, band.begin() + (r + 1) * stride);
+                scalar_kernels().u8[rule](a.data(), fl.data(), n, s8.data() + r * n);
+            }
+            for (const SweepKernels* k : kernels) {
+                std::vector<float> b = band, kf(static_cast<std::size_t>(out_stride) * rows, -1.0f);
+                k->dense_f32[rule](b.data(), stride, n, rows, kf.data(), out_stride);
+                for (float v : b) ASSERT_EQ(v, 0.0f) << k->name << ": acc not re-zeroed";
+                b = band;
+                std::vector<std::uint8_t> k8(static_cast<std::size_t>(out_stride) * rows, 7);
+                k->dense_u8[rule](b.data(), stride, n, rows, k8.data(), out_stride);
+                for (int r = 0; r < rows; ++r) {
+                    for (int i = 0; i < n; ++i) {
+                        ASSERT_NEAR(kf[r * out_stride + i], sf[r * n + i], 1e-5) << k->name;
+                        ASSERT_LE(std::abs(int(k8[r * out_stride + i]) - int(s8[r * n + i])), 1)
+                            << k->name << " n " << n << " row " << r << " i " << i;
+                    }
+                    for (int i = n; i < out_stride; ++i)  // nothing written between rows
+                        ASSERT_EQ(k8[r * out_stride + i], 7) << k->name;
                 }
             }
         }

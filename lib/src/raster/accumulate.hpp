@@ -42,8 +42,8 @@ inline void mark_cells(std::uint8_t* frow, int i0, int i1) {
 }
 
 // Every drawing function takes kMark: true marks the blocks it writes (sparse bands, swept by
-// flags); false leaves the flags alone, for a DENSE band whose flags the caller set to 1
-// beforehand (narrow boxes, where nearly every block has an edge anyway).
+// flags); false leaves the flags alone, for a DENSE band that is swept whole (narrow boxes,
+// where nearly every block has an edge anyway; SweepKernels::dense_*).
 
 // Adds one in-row piece (xa → xb, vertical extent dy) to the deltas of one row.
 // Precondition: 0 ≤ xa, xb ≤ width, so indices ≤ width + 1 < stride.

@@ -115,13 +115,14 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     const Vec2 shift{static_cast<double>(bx0), static_cast<double>(by0)};
     for (std::size_t i = 0; i < src.size(); ++i) tp[i] = m * src[i] - shift;
     const Band band{scratch.acc.data(), scratch.flags.data(), stride, flag_stride, box_w, box_h};
-    if (flag_stride <= kDenseBlocks) {
-        std::memset(band.flags, 1, flags);
-        draw_path<false>(path, tp.data(), tol, band);
-    } else {
-        draw_path<true>(path, tp.data(), tol, band);
-    }
     const SweepKernels& kernels = best_kernels();
+    if (flag_stride <= kDenseBlocks) {
+        draw_path<false>(path, tp.data(), tol, band);
+        sweep_dense(kernels, rule, band.acc, stride, box_w, box_h, target.row(by0) + bx0,
+                    target.stride);
+        return true;
+    }
+    draw_path<true>(path, tp.data(), tol, band);
     for (int r = 0; r < box_h; ++r)
         sweep_row(kernels, rule, band.acc + r * stride, band.flags + r * flag_stride, box_w,
                   target.row(by0 + r) + bx0);

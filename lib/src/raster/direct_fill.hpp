@@ -14,8 +14,9 @@
 // exact, see accumulate.hpp; in y it moves by less than tol), within the flattening error.
 //
 // Two regimes by box width: a box of at most kDenseBlocks blocks per row (small sizes) is DENSE —
-// its flags are all set before drawing and edges skip marking, since nearly every block holds an
-// edge anyway; wider boxes mark blocks so the sweep fills empty and solid runs without summing.
+// edges mark no blocks and the whole band is summed in one sweep call, since nearly every block
+// holds an edge anyway; wider boxes mark blocks so the sweep fills empty and solid runs without
+// summing them.
 #pragma once
 
 #include <cstdint>
@@ -25,7 +26,7 @@
 
 namespace bezel::raster_detail {
 
-inline constexpr int kDenseBlocks = 3;
+inline constexpr int kDenseBlocks = 10;
 // Largest flattening tolerance the direct route takes (vertex excursions stay under 1/3 px, see
 // direct_fill.cpp); coarser tolerances go the general route.
 inline constexpr double kDirectMaxTolerancePx = 0.5;

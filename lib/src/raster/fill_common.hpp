@@ -49,4 +49,13 @@ inline void sweep_row(const SweepKernels& k, FillRule rule, float* acc, std::uin
     k.f32[static_cast<int>(rule)](acc, flags, n, out);
 }
 
+inline void sweep_dense(const SweepKernels& k, FillRule rule, float* acc, std::ptrdiff_t stride,
+                        int n, int rows, std::uint8_t* out, std::ptrdiff_t out_stride) {
+    k.dense_u8[static_cast<int>(rule)](acc, stride, n, rows, out, out_stride);
+}
+inline void sweep_dense(const SweepKernels& k, FillRule rule, float* acc, std::ptrdiff_t stride,
+                        int n, int rows, float* out, std::ptrdiff_t out_stride) {
+    k.dense_f32[static_cast<int>(rule)](acc, stride, n, rows, out, out_stride);
+}
+
 }  // namespace bezel::raster_detail

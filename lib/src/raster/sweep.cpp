@@ -25,6 +25,14 @@ void scalar_sweep(float* acc, std::uint8_t* flags, int n, Out* out) {
     std::fill(flags, flags + row_blocks(n), std::uint8_t{0});
 }
 
+// The dense reference: each row as above, with a scratch flag row (ignored, then cleared).
+template <FillRule R, typename Out>
+void scalar_dense(float* acc, std::ptrdiff_t stride, int n, int rows, Out* out,
+                  std::ptrdiff_t out_stride) {
+    std::uint8_t flags[kMaxBitmapDim / kBlock + 1];
+    for (int r = 0; r < rows; ++r) scalar_sweep<R>(acc + r * stride, flags, n, out + r * out_stride);
+}
+
 // In-register inclusive prefix sum of 4 floats: x + (x << 1 lane) + (x << 2 lanes).
 inline __m128 prefix4(__m128 x) {
     x = _mm_add_ps(x, _mm_castsi128_ps(_mm_slli_si128(_mm_castps_si128(x), 4)));
@@ -101,12 +109,20 @@ void sse2_sweep(float* acc, std::uint8_t* flags, int n, Out* out) {
     sweep_blocks<Sse2Block, R>(acc, flags, n, out);
 }
 
+template <FillRule R, typename Out>
+void sse2_dense(float* acc, std::ptrdiff_t stride, int n, int rows, Out* out,
+              std::ptrdiff_t out_stride) {
+    sweep_dense<Sse2Block, R>(acc, stride, n, rows, out, out_stride);
+}
+
 }  // namespace
 
 const SweepKernels& scalar_kernels() {
     static const SweepKernels k{
         {scalar_sweep<FillRule::NonZero, std::uint8_t>, scalar_sweep<FillRule::EvenOdd, std::uint8_t>},
         {scalar_sweep<FillRule::NonZero, float>, scalar_sweep<FillRule::EvenOdd, float>},
+        {scalar_dense<FillRule::NonZero, std::uint8_t>, scalar_dense<FillRule::EvenOdd, std::uint8_t>},
+        {scalar_dense<FillRule::NonZero, float>, scalar_dense<FillRule::EvenOdd, float>},
         "scalar"};
     return k;
 }
@@ -115,6 +131,8 @@ const SweepKernels& sse2_kernels() {
     static const SweepKernels k{
         {sse2_sweep<FillRule::NonZero, std::uint8_t>, sse2_sweep<FillRule::EvenOdd, std::uint8_t>},
         {sse2_sweep<FillRule::NonZero, float>, sse2_sweep<FillRule::EvenOdd, float>},
+        {sse2_dense<FillRule::NonZero, std::uint8_t>, sse2_dense<FillRule::EvenOdd, std::uint8_t>},
+        {sse2_dense<FillRule::NonZero, float>, sse2_dense<FillRule::EvenOdd, float>},
         "sse2"};
     return k;
 }

@@ -19,6 +19,7 @@
 //   fill, and out[0, n) holds the coverage.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "bezel/raster.hpp"
@@ -35,10 +36,19 @@ inline int row_blocks(int n) { return row_cells(n) >> kBlockShift; }
 
 using SweepU8Fn = void (*)(float* acc, std::uint8_t* flags, int n, std::uint8_t* out);
 using SweepF32Fn = void (*)(float* acc, std::uint8_t* flags, int n, float* out);
+// DENSE bands (narrow boxes, direct_fill.hpp): `rows` rows of acc, `stride` floats apart, every
+// block summed, no flags read or written; output rows `out_stride` pixels apart. One call per
+// band instead of per row. On return acc is all zero.
+using SweepDenseU8Fn = void (*)(float* acc, std::ptrdiff_t stride, int n, int rows,
+                                std::uint8_t* out, std::ptrdiff_t out_stride);
+using SweepDenseF32Fn = void (*)(float* acc, std::ptrdiff_t stride, int n, int rows, float* out,
+                                 std::ptrdiff_t out_stride);
 
 struct SweepKernels {
     SweepU8Fn u8[2];    // indexed by FillRule
     SweepF32Fn f32[2];
+    SweepDenseU8Fn dense_u8[2];
+    SweepDenseF32Fn dense_f32[2];
     const char* name;   // "scalar", "sse2", "avx2"
 };
 

@@ -105,6 +105,12 @@ void avx2_sweep(float* acc, std::uint8_t* flags, int n, Out* out) {
     sweep_blocks<Avx2Block, R>(acc, flags, n, out);
 }
 
+template <FillRule R, typename Out>
+void avx2_dense(float* acc, std::ptrdiff_t stride, int n, int rows, Out* out,
+              std::ptrdiff_t out_stride) {
+    sweep_dense<Avx2Block, R>(acc, stride, n, rows, out, out_stride);
+}
+
 }  // namespace
 }  // namespace bezel::raster_detail
 #pragma GCC pop_options
@@ -116,6 +122,8 @@ const SweepKernels* avx2_kernels() {
     static const SweepKernels k{
         {avx2_sweep<FillRule::NonZero, std::uint8_t>, avx2_sweep<FillRule::EvenOdd, std::uint8_t>},
         {avx2_sweep<FillRule::NonZero, float>, avx2_sweep<FillRule::EvenOdd, float>},
+        {avx2_dense<FillRule::NonZero, std::uint8_t>, avx2_dense<FillRule::EvenOdd, std::uint8_t>},
+        {avx2_dense<FillRule::NonZero, float>, avx2_dense<FillRule::EvenOdd, float>},
         "avx2"};
     static const bool supported = __builtin_cpu_supports("avx2");
     return supported ? &k : nullptr;

@@ -80,5 +80,22 @@ inline void sweep_blocks(float* acc, std::uint8_t* flags, int n, Out* out) {
     }
 }
 
+// The dense band: every block of every row summed (no flags); the guard cells past the last
+// output block, which hold deltas but no pixels, are only cleared.
+template <typename Block, FillRule R, typename Out>
+inline void sweep_dense(float* acc, std::ptrdiff_t stride, int n, int rows, Out* out,
+                        std::ptrdiff_t out_stride) {
+    const int nb = (n + kBlock - 1) >> kBlockShift;
+    const int cells = row_cells(n);
+    for (int r = 0; r < rows; ++r, acc += stride, out += out_stride) {
+        typename Block::Carry carry = Block::zero();
+        for (int b = 0; b < nb; ++b) {
+            const int x0 = b << kBlockShift;
+            Block::template sum<R>(acc + x0, carry, out + x0, std::min(n - x0, kBlock));
+        }
+        std::fill(acc + (nb << kBlockShift), acc + cells, 0.0f);
+    }
+}
+
 }  // namespace
 }  // namespace bezel::raster_detail
