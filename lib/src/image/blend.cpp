@@ -7,6 +7,7 @@
 //   out.c = enc((dec(src.c)·α + dec(dst.c)·dst.a·(1 − α)) / out.a)
 // For an opaque destination this is out.c = enc(lerp(dec(dst.c), dec(src.c), α)).
 #include <algorithm>
+#include <array>
 
 #include "bezel/image.hpp"
 #include "image/srgb.hpp"
@@ -59,12 +60,48 @@ Clip clip(const Image& image, int w, int h, int x, int y) {
 
 }  // namespace
 
+namespace {
+
+// The result of blending `color` at each coverage onto one destination colour: text is mostly
+// drawn onto untouched background, so most pixels are a lookup here instead of six table reads
+// and a division. One per thread (blend functions may run on several threads at once), rebuilt
+// when the pair changes.
+struct CoverageLut {
+    Rgba8 dst{0, 0, 0, 0}, color{0, 0, 0, 0};
+    bool valid = false;
+    std::array<Rgba8, 256> out;
+};
+
+const CoverageLut& coverage_lut(Rgba8 dst, Rgba8 color, const SrgbTables& t, const float src[3]) {
+    thread_local CoverageLut lut;
+    if (lut.valid && lut.dst == dst && lut.color == color) return lut;
+    const float color_a = color.a / 255.0f;
+    for (int cov = 0; cov < 256; ++cov) {
+        Rgba8 d = dst;
+        if (cov > 0) {
+            float a = cov / 255.0f * color_a;
+            const float alpha[3] = {a, a, a};
+            if (cov == 255 && color.a == 255) d = color;
+            else blend_pixel(t, d, src, alpha, a);
+        }
+        lut.out[static_cast<std::size_t>(cov)] = d;
+    }
+    lut.dst = dst;
+    lut.color = color;
+    lut.valid = true;
+    return lut;
+}
+
+}  // namespace
+
 void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color) {
     Clip c = clip(image, mask.width, mask.height, x, y);
     if (c.empty() || color.a == 0) return;
     const SrgbTables& t = srgb_tables();
     const float src[3] = {t.decode[color.r], t.decode[color.g], t.decode[color.b]};
     const float color_a = color.a / 255.0f;
+    // The colour under the mask's first visible pixel is almost always the page's background.
+    const CoverageLut& lut = coverage_lut(image.row(y + c.y0)[x + c.x0], color, t, src);
     for (int my = c.y0; my < c.y1; ++my) {
         const std::uint8_t* m = mask.row(my);
         // Indexed from the first visible pixel: `x` may be negative.
@@ -72,6 +109,10 @@ void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color) {
         for (int mx = c.x0; mx < c.x1; ++mx, ++d) {
             std::uint8_t cov = m[mx];
             if (cov == 0) continue;
+            if (*d == lut.dst) {
+                *d = lut.out[cov];
+                continue;
+            }
             if (cov == 255 && color.a == 255) {
                 *d = color;
                 continue;

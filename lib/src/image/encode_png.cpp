@@ -1,8 +1,11 @@
 // PNG encoding of colour images and masks into memory through libpng's low-level API, which (unlike
 // the simplified png_image API png.cpp uses for reading) lets us pick the zlib level and filter.
 //
-// Speed over size: zlib level 1 and the single SUB filter (no per-row filter search). On a text
-// page (mostly flat background, anti-aliased edges) SUB costs little and keeps the files small.
+// Speed over size: zlib level 1 and no filter (no per-row filter search). Measured on the
+// benchmark page (tools/bench/render_page.txt, 716×2361 gray): no filter encodes faster than
+// SUB and gives a smaller file (266 KB against 285 KB: the flat background is long runs of one
+// byte either way, and SUB turns glyph edges into more distinct values); Z_RLE was larger
+// (548 KB) and no faster.
 //
 // libpng reports errors by longjmp. Only encode_rows() calls setjmp, and it keeps no object with a
 // destructor in its frame (scratch rows and the output vector belong to the callers), so the jump
@@ -74,7 +77,7 @@ bool encode_rows(WriteState& st, int width, int height, int color_type, const vo
     }
     png_set_write_fn(png, &st, on_write, on_flush);
     png_set_compression_level(png, kZlibLevel);
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
     png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
                  color_type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                  PNG_FILTER_TYPE_DEFAULT);
