@@ -9,6 +9,12 @@ Command add_intersect_command(CLI::App& app);
 Command add_smooth_command(CLI::App& app);
 Command add_continuity_command(CLI::App& app);
 Command add_stroke_command(CLI::App& app);
+Command add_glyph_command(CLI::App& app);
+Command add_fill_command(CLI::App& app);
+Command add_bench_command(CLI::App& app);
+Command add_surface_command(CLI::App& app);
+Command add_render_command(CLI::App& app);
+Command add_atlas_command(CLI::App& app);
 
 std::vector<Command> add_all_commands(CLI::App& app) {
     using AddCommand = Command (*)(CLI::App&);
@@ -19,6 +25,12 @@ std::vector<Command> add_all_commands(CLI::App& app) {
         add_smooth_command,
         add_continuity_command,
         add_stroke_command,
+        add_glyph_command,
+        add_fill_command,
+        add_bench_command,
+        add_surface_command,
+        add_render_command,
+        add_atlas_command,
     };
     std::vector<Command> commands;
     for (AddCommand add : kCommands) commands.push_back(add(app));
