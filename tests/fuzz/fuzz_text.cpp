@@ -28,6 +28,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FuzzReader in(data, size);
     bezel::TextRenderOptions options;
     options.shape.size_px = in.byte() < 230 ? 1 + in.byte() % 40 : in.number();
+    // Known finding (reported, tests/fuzz_regressions_test.cpp): sizes below 1/2048 px give
+    // infinite advances. Left out until fixed so the rest keeps fuzzing.
+    if (options.shape.size_px > 0 && options.shape.size_px < 1.0 / 2048) options.shape.size_px = 1;
     options.shape.direction = static_cast<bezel::Direction>(in.byte() % 5);
     if (in.byte() > 200) options.shape.script = in.rest(4);
     const std::string features = in.byte() > 180 ? in.rest(in.below(24)) : "";
