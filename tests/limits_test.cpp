@@ -1,0 +1,218 @@
+// Every limit of bezel/limits.hpp crossed: the input just past the wall gets an Error whose one
+// line names what was too large, and nothing is allocated for it first. (Limits whose crossing
+// is already tested beside their module are listed at the end, not repeated.)
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "bezel/limits.hpp"
+
+namespace bezel {
+namespace {
+
+const std::string kDejaVu = BEZEL_FONTS_DIR "/dejavu-sans/DejaVuSans.ttf";
+
+// The error is one line and contains `needle`.
+template <typename T>
+void expect_error(const Expected<T>& r, const std::string& needle) {
+    ASSERT_FALSE(r.ok());
+    const std::string& m = r.error().message;
+    EXPECT_NE(m.find(needle), std::string::npos) << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+}
+
+TEST(Limits, BitmapLargerThankMaxBitmapDimIsAnError) {
+    Polylines square;
+    square.points = {{0, 0}, {1, 0}, {1, 1}};
+    square.contour_ends = {3};
+    Rasterizer raster;
+    std::uint8_t pixel = 0;
+    // The size is checked before the (single-pixel) memory is touched.
+    expect_error(raster.fill(square, FillRule::NonZero,
+                             MaskView{&pixel, kMaxBitmapDim + 1, 1, kMaxBitmapDim + 1}),
+                 std::to_string(kMaxBitmapDim + 1));
+    EXPECT_EQ(pixel, 0);
+    std::uint8_t row[4] = {};
+    EXPECT_TRUE(raster.fill(square, FillRule::NonZero, MaskView{row, 4, 1, 4}));
+}
+
+TEST(Limits, FillWithMoreThankMaxEdgesIsRefusedBeforeFlattening) {
+    // One cubic 2^40 px wide at 1e-9 px tolerance: Wang's bound asks for far more than kMaxEdges.
+    Path path;
+    path.move_to({0, 0});
+    path.cubic_to({0x1p40, 0x1p40}, {-0x1p40, 0x1p40}, {1, 0});
+    path.close();
+    FlattenOptions fine;
+    fine.tolerance_px = kMinFlattenTolerancePx;
+    Rasterizer raster;
+    std::uint8_t pixels[16] = {};
+    auto status = raster.fill_path(path, Affine::identity(), FillRule::NonZero,
+                                   MaskView{pixels, 4, 4, 4}, fine);
+    ASSERT_FALSE(status.ok());
+    EXPECT_EQ(status.error().message.find('\n'), std::string::npos);
+    EXPECT_LT(raster.scratch_capacity_bytes(), std::size_t{1} << 20);  // nothing allocated for it
+}
+
+TEST(Limits, CurveNeedingMoreThankMaxSegmentsPerCurveIsReportedByFlattenChecked) {
+    Path path;
+    path.move_to({0, 0});
+    path.quad_to({0x1p45, 0x1p45}, {1, 0});
+    FlattenOptions fine;
+    fine.tolerance_px = 1e-6;
+    for (FlattenMethod method : {FlattenMethod::WangUniform, FlattenMethod::DistanceSubdivision,
+                                 FlattenMethod::ParabolaIntegral}) {
+        fine.method = method;
+        Polylines out;
+        expect_error(flatten_checked(path, Affine::identity(), fine, out), "verb 1");
+        EXPECT_TRUE(out.points.empty());
+        flatten(path, Affine::identity(), fine, out);  // the silent version caps, never more
+        EXPECT_LE(out.points.size(), kMaxSegmentsPerCurve + 1);
+    }
+    // ClassicFlatness is scale-free: its wall is the halving depth.
+    fine.method = FlattenMethod::ClassicFlatness;
+    fine.classic_flatness_epsilon = 1e-300;
+    Polylines out;
+    expect_error(flatten_checked(path, Affine::identity(), fine, out), "kMaxFlattenDepth");
+}
+
+TEST(Limits, CoordinateBeyondkMaxFlattenCoordinatePxIsReported) {
+    Path path;
+    path.move_to({0, 0});
+    path.line_to({kMaxFlattenCoordinatePx * 2, 0});
+    path.line_to({0, 1});
+    Polylines out;
+    expect_error(flatten_checked(path, Affine::identity(), {}, out), "kMaxFlattenCoordinatePx");
+    flatten(path, Affine::identity(), {}, out);
+    EXPECT_TRUE(out.points.empty());  // the contour is dropped whole
+}
+
+TEST(Limits, PathDataLongerThankMaxSvgPathLengthIsAnError) {
+    std::string data = "M0 0";
+    data.resize(kMaxSvgPathLength + 1, ' ');
+    expect_error(parse_svg_path(data), std::to_string(kMaxSvgPathLength));
+    data.resize(kMaxSvgPathLength);
+    EXPECT_TRUE(parse_svg_path(data));
+}
+
+TEST(Limits, ArcsExpandingPastkMaxSvgPathPointsAreAnError) {
+    // A full-turn pair of arcs at a tolerance below rounding: kMaxCubicsPerArc cubics each, 3
+    // points per cubic, so ⌈kMaxSvgPathPoints / 3 / 512⌉ + 1 pairs cross the wall.
+    const std::size_t arcs = kMaxSvgPathPoints / (3 * kMaxCubicsPerArc) + 2;
+    std::string data = "M0 0";
+    for (std::size_t i = 0; i < arcs; ++i) data += i % 2 ? "A1 1 0 0 1 0 0" : "A1 1 0 0 1 2 0";
+    SvgParseOptions fine;
+    fine.arc_tolerance = 1e-300;
+    expect_error(parse_svg_path(data, fine), "points");
+}
+
+TEST(Limits, FontSizeAbovekMaxFontSizePxIsAnError) {
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    const GlyphId g = font->glyph_for_char(U'g').value();
+    expect_error(font->outline(g, {kMaxFontSizePx * 2, false}), "size");
+    EXPECT_TRUE(font->outline(g, {kMaxFontSizePx, false}));
+}
+
+TEST(Limits, FaceIndexAbovekMaxFaceIndexIsAnError) {
+    expect_error(Font::open(kDejaVu, kMaxFaceIndex + 1), std::to_string(kMaxFaceIndex));
+    expect_error(Font::open(kDejaVu, 1), "DejaVuSans.ttf");  // in range, but no such face
+}
+
+TEST(Limits, TextLongerThankMaxTextBytesIsAnErrorFromLayoutAndRenderer) {
+    auto shaper = Shaper::open(kDejaVu);
+    ASSERT_TRUE(shaper);
+    const std::string text(kMaxTextBytes + 1, 'a');
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    expect_error(layout_text(*shaper, font->metrics(), text, {}, {}),
+                 std::to_string(kMaxTextBytes));
+    auto renderer = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(renderer);
+    expect_error(renderer->render(text, {}), std::to_string(kMaxTextBytes));
+}
+
+TEST(Limits, SmoothingMoreThankMaxSmoothPointsIsAnError) {
+    std::vector<Point> points(kMaxSmoothPoints + 1);
+    for (std::size_t i = 0; i < points.size(); ++i) points[i] = {static_cast<double>(i), 0};
+    expect_error(catmull_rom(points), std::to_string(kMaxSmoothPoints));
+    expect_error(natural_spline(points), std::to_string(kMaxSmoothPoints));
+    expect_error(bspline(points), std::to_string(kMaxSmoothPoints));
+}
+
+TEST(Limits, SmoothCoordinateBeyondkMaxSmoothCoordinateIsAnError) {
+    expect_error(natural_spline({{0, 0}, {0x1p101, 0}}), "points[1]");
+}
+
+TEST(Limits, ChaikinPastItsIterationAndOutputWallsIsAnError) {
+    const std::vector<Point> triangle{{0, 0}, {4, 0}, {0, 4}};
+    expect_error(chaikin(triangle, kMaxChaikinIterations + 1), std::to_string(kMaxChaikinIterations));
+    // 3·2^21 = 6 Mi points > kMaxChaikinOutputPoints, refused before any work.
+    expect_error(chaikin(triangle, 21, {true, true}), std::to_string(kMaxChaikinOutputPoints));
+}
+
+TEST(Limits, DashesPastkMaxDashesAreAnError) {
+    Path line;
+    line.move_to({0, 0});
+    line.line_to({1e7, 0});
+    expect_error(dash(line, {1, 1}, 0), "dash");
+    StrokeStyle style;
+    style.dashes = {1, 1};
+    expect_error(stroke(line, style), "dash");
+}
+
+TEST(Limits, StrokePastkMaxStrokeSegmentsIsAnError) {
+    // Round joins on a zigzag at a tolerance that asks for many arc pieces per join.
+    Path zigzag;
+    zigzag.move_to({0, 0});
+    for (int i = 1; i <= 20000; ++i) zigzag.line_to({i * 1.0, (i % 2) * 1.0});
+    StrokeStyle style;
+    style.width = 1e6;
+    style.join = LineJoin::Round;
+    style.tolerance = 1e-9;
+    auto r = stroke(zigzag, style);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().message.find('\n'), std::string::npos);
+}
+
+TEST(Limits, SurfacePastkMaxSurfacePatchesAndTessellationWallsIsAnError) {
+    std::vector<Patch> none;
+    expect_error(validate_patches(none, "teapot"), "teapot");
+    expect_error(bspline_grid(std::vector<Vec3>(16), kMaxBSplineGridSide + 1, 4),
+                 std::to_string(kMaxBSplineGridSide));
+}
+
+TEST(Limits, ImageWiderThankMaxImageDimIsAnError) {
+    std::vector<std::uint8_t> row(kMaxImageDim + 1, 255);
+    const ConstMaskView wide{row.data(), kMaxImageDim + 1, 1, kMaxImageDim + 1};
+    expect_error(encode_png_gray(wide), "kMaxImageDim");
+    // A text page wider than kMaxImageDim is refused, not allocated.
+    auto renderer = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(renderer);
+    TextRenderOptions o;
+    o.shape.size_px = 64;
+    auto page = renderer->render(std::string(1000, 'W'), o);  // ~64 000 px wide
+    ASSERT_FALSE(page.ok());
+    EXPECT_EQ(page.error().message.find('\n'), std::string::npos);
+}
+
+TEST(Limits, MoreThankMaxPathIntersectionsIsAnError) {
+    // 1025 horizontal against 1025 vertical lines: 1025² = 1 050 625 > 2^20 crossings.
+    Path rows, columns;
+    for (int i = 0; i < 1025; ++i) {
+        rows.move_to({-1, i + 0.5});
+        rows.line_to({1026, i + 0.5});
+        columns.move_to({i + 0.5, -1});
+        columns.line_to({i + 0.5, 1026});
+    }
+    expect_error(intersect_paths(rows, columns), std::to_string(kMaxPathIntersections));
+}
+
+// Crossed elsewhere (not repeated here): the glyph cache's byte bound (glyph_cache_test,
+// StaysWithinItsBoundAcrossManySizes); kMaxTextCodePoints, a CLI limit (bad_inputs_cli_test).
+// Not crossed by a test: kMaxIntersectWork and kMaxPathSegmentPairs (2^24 candidate pairs is
+// seconds of work under the sanitizers; the walls are what fuzz_intersect runs against).
+
+}  // namespace
+}  // namespace bezel
