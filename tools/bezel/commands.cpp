@@ -9,6 +9,7 @@ Command add_intersect_command(CLI::App& app);
 Command add_smooth_command(CLI::App& app);
 Command add_continuity_command(CLI::App& app);
 Command add_stroke_command(CLI::App& app);
+Command add_info_command(CLI::App& app);
 Command add_glyph_command(CLI::App& app);
 Command add_fill_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
@@ -25,6 +26,7 @@ std::vector<Command> add_all_commands(CLI::App& app) {
         add_smooth_command,
         add_continuity_command,
         add_stroke_command,
+        add_info_command,
         add_glyph_command,
         add_fill_command,
         add_bench_command,
