@@ -440,8 +440,9 @@ int main(int argc, char** argv) {
                 }
                 first_json = false;
             } else {
+                // A renderer left out (--only, or not installed) shows as -1, its ratio as 0.
                 std::printf("%-22s %5d %6zu %10.0f %10.0f %8.2f %10.0f %10.0f", name.c_str(), size,
-                            glyphs.size(), ft, bz, ft / bz, stb, agg_ns);
+                            glyphs.size(), ft, bz, ft > 0 && bz > 0 ? ft / bz : 0.0, stb, agg_ns);
                 if (opt.accuracy)
                     std::printf("   %7.3f / %6.2f     %7.3f / %6.2f", eb.mean(), eb.max, ef.mean(), ef.max);
                 std::printf("\n");
