@@ -80,28 +80,28 @@ std::vector<BadInput> catalogue() {
         {"missing font file", {"outline", "missing.ttf", "--char", "g", "-o", "out.svg"}, 1, "missing.ttf"},
         {"missing font file (render)", {"render", "missing.ttf", "--text", "g", "-o", "out.png"}, 1, "missing.ttf"},
         {"face index out of range", {"outline", kDejaVu, "--face-index", "3", "--char", "g", "-o", "out.svg"}, 1, "face"},
-        {"font size 0", {"outline", kDejaVu, "--char", "g", "--font-size", "0", "-o", "out.svg"}, 2, "--font-size"},
-        {"negative font size", {"outline", kDejaVu, "--char", "g", "--font-size", "-12", "-o", "out.svg"}, 2, "--font-size"},
-        {"NaN font size", {"outline", kDejaVu, "--char", "g", "--font-size", "nan", "-o", "out.svg"}, 2, "--font-size"},
-        {"enormous font size", {"outline", kDejaVu, "--char", "g", "--font-size", "1e9", "-o", "out.svg"}, 2, "--font-size"},
+        {"font size 0", {"outline", kDejaVu, "--char", "g", "--font-size", "0", "-o", "out.svg"}, 1, "--font-size"},
+        {"negative font size", {"outline", kDejaVu, "--char", "g", "--font-size", "-12", "-o", "out.svg"}, 1, "--font-size"},
+        {"NaN font size", {"outline", kDejaVu, "--char", "g", "--font-size", "nan", "-o", "out.svg"}, 1, "--font-size"},
+        {"enormous font size", {"outline", kDejaVu, "--char", "g", "--font-size", "1e9", "-o", "out.svg"}, 1, "--font-size"},
         {"enormous font size (render)", {"render", kDejaVu, "--text", "g", "--font-size", "1e300", "-o", "out.png"}, 2, "--font-size"},
         {"font size not a number", {"render", kDejaVu, "--text", "g", "--font-size", "big", "-o", "out.png"}, 2, "--font-size"},
         {"unknown variation axis", {"outline", kDejaVu, "--char", "g", "--variations", "wght=700", "-o", "out.svg"}, 1, "wght"},
         {"malformed path data", {"intersect", "M0 0 L", "M0 0L1 1", "-o", "out.json"}, 2, "path"},
         {"path data with a letter inside a number", {"continuity", "M0 0 L1x 2"}, 2, "offset"},
         {"path data overflowing a double", {"intersect", "M0 0L1e999 0", "M0 1L1 0"}, 2, "offset"},
-        {"unknown option", {"outline", kDejaVu, "--bogus"}, 2, "--bogus"},
+        {"unknown option", {"outline", kDejaVu, "--char", "g", "--bogus"}, 2, "--bogus"},
         {"unknown command", {"outlines", kDejaVu}, 2, "outlines"},
         {"unknown output format", {"outline", kDejaVu, "--char", "g", "-o", "out.xyz"}, 2, "out.xyz"},
         {"output into a missing directory", {"outline", kDejaVu, "--char", "g", "-o", "no-such-dir/out.svg"}, 1, "no-such-dir/out.svg"},
         // (Permissions do not stop root, which CI may be: /proc refuses new files to everyone.)
         {"output where files cannot be created", {"render", kDejaVu, "--text", "g", "-o", "/proc/out.png"}, 1, "/proc/out.png"},
-        {"output under a regular file", {"smooth", "--points", "0,0 1,1", "-o", "text.ttf/out.svg"}, 1, "text.ttf/out.svg"},
-        {"output onto a directory", {"outline", kDejaVu, "--char", "g", "-o", "a-directory.ttf"}, 2, "a-directory.ttf"},
+        {"output under a regular file", {"smooth", "--method", "natural", "--points", "0,0 1,1", "-o", "text.ttf/out.svg"}, 1, "text.ttf/out.svg"},
+        {"output onto a directory", {"outline", kDejaVu, "--char", "g", "-O", "svg", "-o", "a-directory.ttf"}, 1, "a-directory.ttf"},
         {"invalid UTF-8 text (lone continuation byte)", {"render", kDejaVu, "--text", "a\x80z", "-o", "out.png"}, 1, "byte 1"},
         {"invalid UTF-8 text (surrogate)", {"render", kDejaVu, "--text", "\xED\xA0\x80", "-o", "out.png"}, 1, "byte 0"},
         {"invalid UTF-8 --char", {"outline", kDejaVu, "--char", "\xC3", "-o", "out.svg"}, 2, "--char"},
-        {"--text past kMaxTextCodePoints", {"outline", kDejaVu, "--text", std::string(1001, 'a')}, 2, "--text"},
+        {"--text past kMaxTextCodePoints", {"outline", kDejaVu, "--text", std::string(1001, 'a')}, 1, "--text"},
         {"missing --text-file", {"render", kDejaVu, "--text-file", "missing.txt", "-o", "out.png"}, 1, "missing.txt"},
     };
 }
@@ -152,7 +152,7 @@ TEST(BadInputs, EachGivesOneErrorLineNamingTheInputAndNoOutputFile) {
         std::string command = "bezel";
         for (std::string a : bad.args) {
             if (a == kDejaVu) a = "DejaVuSans.ttf";
-            if (a.size() > 40) a = a.substr(0, 8) + "…(" + std::to_string(a.size()) + " bytes)";
+            if (a.size() > 40) a = a.substr(0, 8) + "...(" + std::to_string(a.size()) + " bytes)";
             command += " " + shell_quote(a);
         }
         std::string message = err[0];
