@@ -4,7 +4,10 @@
 // fills correctly with FillRule::NonZero (its pieces may overlap; non-zero unions them). Curved
 // pieces are offset by cubic approximations whose distance from the true offset curve is at most
 // `tolerance` (checked by sampling in the tests); cusps and curvature tighter than the half-width
-// are handled without spikes or holes (method at the implementation).
+// are handled without spikes or holes (method at the implementation: lib/src/stroke/outline.cpp).
+// Every piece of the result winds the same way (negative Path::signed_area), so non-zero never
+// cancels one against another; a renderer that accumulates coverage may over-darken edge pixels
+// where pieces overlap — Rasterizer's OverlapMode::Accurate resolves that exactly.
 #pragma once
 
 #include <cstddef>
@@ -35,6 +38,7 @@ struct StrokeStyle {
                                        // an odd count repeats as SVG does
     double dash_offset = 0;            // SVG stroke-dashoffset
     double tolerance = 0.01;           // max distance of the result from the exact stroke outline
+                                       // (raised to 1e-12 of the geometry's size if below it)
 };
 
 // The stroke outline of `path`. Open contours get caps at both ends; closed contours get a join
