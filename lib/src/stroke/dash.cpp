@@ -16,44 +16,70 @@ using stroke_detail::ContourInput;
 
 constexpr double kArcAccuracy = 1e-9;
 
-double seg_length(const PathSeg& s) {
-    Rect b = s.kind == SegKind::Line ? s.as_line().control_box() : s.to_cubic().control_box();
-    double acc = kArcAccuracy * std::max({b.width(), b.height(), 1e-300});
-    switch (s.kind) {
-        case SegKind::Line: return s.as_line().length();
-        case SegKind::Quad: return s.as_quad().arclen(acc);
-        case SegKind::Cubic: return s.as_cubic().arclen(acc);
-    }
-    return 0.0;
-}
+// A segment with its cumulative arc length at kTableSteps equal parameter steps, so a distance
+// is inverted on one short sub-curve instead of from the start of a long one (dashing a long
+// curve is then linear in the number of dashes, not quadratic).
+constexpr int kTableSteps = 16;
 
-// The part of `s` between arc lengths a and b (0 ≤ a ≤ b ≤ len).
-PathSeg sub_seg(const PathSeg& s, double len, double a, double b) {
-    PathSeg out;
-    out.kind = s.kind;
-    if (s.kind == SegKind::Line) {
-        double ta = len > 0 ? a / len : 0.0, tb = len > 0 ? b / len : 0.0;
-        out.p[0] = s.eval(ta);
-        out.p[1] = b >= len ? s.p[1] : s.eval(tb);
+struct Measured {
+    PathSeg seg;
+    double cum[kTableSteps + 1] = {};  // arc length of [0, i/kTableSteps]; lines use cum[K] only
+
+    double length() const { return cum[kTableSteps]; }
+
+    explicit Measured(const PathSeg& s) : seg(s) {
+        if (s.kind == SegKind::Line) {
+            cum[kTableSteps] = s.as_line().length();
+            return;
+        }
+        CubicBez c = s.to_cubic();
+        Rect b = c.control_box();
+        double acc = kArcAccuracy * std::max({b.width(), b.height(), 1e-300}) / kTableSteps;
+        for (int i = 0; i < kTableSteps; ++i)
+            cum[i + 1] = cum[i] + c.subsegment(double(i) / kTableSteps, double(i + 1) / kTableSteps)
+                                      .arclen(acc);
+    }
+
+    // The parameter at arc length d (clamped to [0, length]).
+    double param(double d) const {
+        double len = length();
+        if (d <= 0 || !(len > 0)) return 0.0;
+        if (d >= len) return 1.0;
+        if (seg.kind == SegKind::Line) return d / len;
+        int i = static_cast<int>(std::upper_bound(cum, cum + kTableSteps + 1, d) - cum) - 1;
+        i = std::clamp(i, 0, kTableSteps - 1);
+        double t0 = double(i) / kTableSteps, t1 = double(i + 1) / kTableSteps;
+        double piece = cum[i + 1] - cum[i];
+        if (!(piece > 0)) return t0;
+        CubicBez sub = seg.to_cubic().subsegment(t0, t1);
+        double local = sub.inv_arclen(d - cum[i], kArcAccuracy * piece);
+        return t0 + (t1 - t0) * local;
+    }
+
+    // The part between arc lengths a and b (0 ≤ a ≤ b ≤ length), same kind as the segment.
+    PathSeg part(double a, double b) const {
+        PathSeg out;
+        out.kind = seg.kind;
+        double ta = param(a), tb = b >= length() ? 1.0 : param(b);
+        switch (seg.kind) {
+            case SegKind::Line:
+                out.p[0] = seg.eval(ta);
+                out.p[1] = tb >= 1.0 ? seg.p[1] : seg.eval(tb);
+                break;
+            case SegKind::Quad: {
+                QuadBez q = seg.as_quad().subsegment(ta, tb);
+                out.p[0] = q.p0, out.p[1] = q.p1, out.p[2] = q.p2;
+                break;
+            }
+            case SegKind::Cubic: {
+                CubicBez c = seg.as_cubic().subsegment(ta, tb);
+                out.p[0] = c.p0, out.p[1] = c.p1, out.p[2] = c.p2, out.p[3] = c.p3;
+                break;
+            }
+        }
         return out;
     }
-    double acc = kArcAccuracy * std::max(len, 1e-300);
-    auto param = [&](double d) {
-        if (d <= 0) return 0.0;
-        if (d >= len) return 1.0;
-        return s.kind == SegKind::Quad ? s.as_quad().inv_arclen(d, acc)
-                                       : s.as_cubic().inv_arclen(d, acc);
-    };
-    double ta = param(a), tb = param(b);
-    if (s.kind == SegKind::Quad) {
-        QuadBez q = s.as_quad().subsegment(ta, tb);
-        out.p[0] = q.p0, out.p[1] = q.p1, out.p[2] = q.p2;
-    } else {
-        CubicBez c = s.as_cubic().subsegment(ta, tb);
-        out.p[0] = c.p0, out.p[1] = c.p1, out.p[2] = c.p2, out.p[3] = c.p3;
-    }
-    return out;
-}
+};
 
 struct Dash {
     Point start;
@@ -86,12 +112,12 @@ Expected<Path> dash(const Path& path, const std::vector<double>& dashes, double 
     const std::size_t n = pattern.size();
 
     std::vector<ContourInput> contours = stroke_detail::contours_of(path);
-    std::vector<std::vector<double>> lengths(contours.size());
+    std::vector<std::vector<Measured>> measured(contours.size());
     // Each period holds n/2 dashes; a contour starts at most one extra.
     double estimate = 0;
     for (std::size_t c = 0; c < contours.size(); ++c) {
         double total = 0;
-        for (const PathSeg& s : contours[c].segs) total += lengths[c].emplace_back(seg_length(s));
+        for (const PathSeg& s : contours[c].segs) total += measured[c].emplace_back(s).length();
         estimate += (total / period + 2.0) * static_cast<double>(n / 2);
     }
     if (!(estimate <= static_cast<double>(kMaxDashes)))
@@ -123,11 +149,11 @@ Expected<Path> dash(const Path& path, const std::vector<double>& dashes, double 
         bool open = on;
         if (on) current.start = contour.start;
         for (std::size_t i = 0; i < contour.segs.size(); ++i) {
-            const PathSeg& s = contour.segs[i];
-            double len = lengths[c][i], pos = 0;
+            const Measured& m = measured[c][i];
+            double len = m.length(), pos = 0;
             while (true) {
                 if (rem <= 0) {  // the interval ends here: switch
-                    Point here = pos >= len ? s.end() : sub_seg(s, len, 0, pos).end();
+                    Point here = pos >= len ? m.seg.end() : m.seg.eval(m.param(pos));
                     if (on) {
                         found.push_back(std::move(current));
                         current = Dash{};
@@ -145,7 +171,7 @@ Expected<Path> dash(const Path& path, const std::vector<double>& dashes, double 
                 }
                 if (pos >= len) break;
                 double step = std::min(rem, len - pos);
-                if (on) current.segs.push_back(sub_seg(s, len, pos, pos + step));
+                if (on) current.segs.push_back(m.part(pos, pos + step));
                 pos += step;
                 rem -= step;
             }
