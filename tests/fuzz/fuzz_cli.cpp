@@ -37,6 +37,7 @@ protected:
 };
 
 fs::path g_scratch;
+fs::path g_home;  // libFuzzer's own working directory: its corpus paths are relative to it
 
 }  // namespace
 
@@ -45,7 +46,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
                        "/bezel-fuzz-cli-XXXXXX";
     if (!mkdtemp(tmpl.data())) std::abort();
     g_scratch = tmpl;
-    if (chdir(tmpl.c_str()) != 0) std::abort();
+    g_home = fs::current_path();
     static NullBuffer null;
     std::cout.rdbuf(&null);
     std::cerr.rdbuf(&null);
@@ -79,7 +80,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     argv.push_back(nullptr);
     std::cout.clear();
     std::cerr.clear();
+    if (chdir(g_scratch.c_str()) != 0) std::abort();
     const int code = bezel::cli::run_cli(static_cast<int>(args.size()), argv.data());
+    if (chdir(g_home.c_str()) != 0) std::abort();
     BEZEL_FUZZ_CHECK(code == 0 || code == 1 || code == 2);
 
     std::error_code ec;
