@@ -21,7 +21,7 @@ constexpr const char* kCommand = "bezel surface";
 struct SurfaceArgs {
     std::string patch_file;            // --patch
     std::string basis;                 // --basis
-    std::string view = "30,20";        // --view az,el
+    std::string view = "-35,25";       // --view az,el
     std::string eye, target, up = "0,0,1";
     std::string projection = "perspective";
     std::string mode = "solid";
@@ -197,7 +197,7 @@ Command add_surface_command(CLI::App& app) {
         "  points], ...]} for the C2 surface of a control grid. The picture is fitted to the\n"
         "  surface. Wireframes do not remove hidden lines.\n"
         "Examples:\n"
-        "  bezel surface --patch teapot.json --view 30,20 --mode solid -o teapot.png\n"
+        "  bezel surface --patch teapot.json --view -35,25 --mode solid -o teapot.png\n"
         "  bezel surface --patch saddle.json --projection ortho --mode wire --size 256x256 -o s.png\n"
         "  bezel surface --patch teapot.json --tolerance 0.001 -o teapot.obj");
     cmd->add_option("--patch", args->patch_file, "The patch JSON file ('-': stdin)")
@@ -208,7 +208,7 @@ Command add_surface_command(CLI::App& app) {
         ->type_name("BASIS")
         ->check(CLI::IsMember({"bezier", "hermite", "bspline"}));
     cmd->add_option("--view", args->view,
-                    "Azimuth,elevation in degrees around the surface, z up (default 30,20)")
+                    "Azimuth,elevation in degrees around the surface, z up (default -35,25)")
         ->type_name("AZ,EL");
     cmd->add_option("--eye", args->eye, "Camera position (instead of --view)")->type_name("X,Y,Z");
     cmd->add_option("--target", args->target, "With --eye: point looked at (default: the centre)")
