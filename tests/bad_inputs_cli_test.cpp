@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "bezel/text.hpp"
 #include "support/cli_run.hpp"
 
 namespace bezel {
@@ -146,7 +147,9 @@ TEST(BadInputs, EachGivesOneErrorLineNamingTheInputAndNoOutputFile) {
         EXPECT_NE(err[0].find(bad.names), std::string::npos) << err[0];
         // One line; a usage error may add the hint to --help.
         EXPECT_LE(err.size(), bad.exit_code == 2 ? 2u : 1u) << r.err;
-        if (err.size() == 2) EXPECT_NE(err[1].find("--help"), std::string::npos) << err[1];
+        if (err.size() == 2) {
+            EXPECT_NE(err[1].find("--help"), std::string::npos) << err[1];
+        }
         EXPECT_EQ(dir.entries(), before) << "a file was left behind";
 
         std::string command = "bezel";
@@ -159,6 +162,15 @@ TEST(BadInputs, EachGivesOneErrorLineNamingTheInputAndNoOutputFile) {
         for (std::size_t at; (at = message.find(kDejaVu)) != std::string::npos;)
             message.replace(at, kDejaVu.size(), "DejaVuSans.ttf");
         for (std::size_t at; (at = message.find('|')) != std::string::npos;) message.replace(at, 1, "\\|");
+        if (!decode_utf8(message).ok()) {  // the table is UTF-8: show a bad input's bytes as \xNN
+            std::string escaped;
+            for (unsigned char c : message) {
+                char buf[8];
+                std::snprintf(buf, sizeof buf, "\\x%02X", c);
+                escaped += c >= 0x80 ? std::string(buf) : std::string(1, static_cast<char>(c));
+            }
+            message = escaped;
+        }
         table += "| " + bad.what + " | `" + command + "` | " + std::to_string(r.exit_code) + " | `" +
                  message + "` |\n";
     }
