@@ -210,6 +210,31 @@ TEST_F(GlyphCli, OverlappingGlyphUsesTheAccurateMode) {
     }
 }
 
+TEST_F(GlyphCli, OverlapAccurateResolvesUnmarkedOverlappingComponents) {
+    // DejaVu Sans marks no glyph as overlapping, yet U+1EC7 (e with circumflex and dot below) has
+    // components whose edges overlap: plain accumulation over-darkens them, --overlap accurate
+    // does not. Elsewhere the two modes agree within rounding.
+    json plain = run_json({kDejaVu, "--text", "\u1EC7e", "--font-size", "12", "--offset", "0.3,0.3"});
+    json acc = run_json({kDejaVu, "--text", "\u1EC7e", "--font-size", "12", "--offset", "0.3,0.3",
+                         "--overlap", "accurate"});
+    ASSERT_EQ(plain.size(), 2u);
+    EXPECT_EQ(plain[0]["overlap"], "accumulate");
+    EXPECT_EQ(acc[0]["overlap"], "accurate");
+    int darker[2] = {0, 0}, worst[2] = {0, 0};
+    for (int i = 0; i < 2; ++i)
+        for (std::size_t y = 0; y < plain[i]["rows"].size(); ++y) {
+            const std::string p = plain[i]["rows"][y], a = acc[i]["rows"][y];
+            for (std::size_t x = 0; x < p.size() / 2; ++x) {
+                const int d = hex_byte(p, x) - hex_byte(a, x);
+                darker[i] += d > 1;
+                worst[i] = std::max(worst[i], std::abs(d));
+            }
+        }
+    EXPECT_GT(worst[0], 60);   // the overlap, over-darkened by plain accumulation
+    EXPECT_GT(darker[0], 0);
+    EXPECT_LE(worst[1], 1);    // plain 'e': no overlap
+}
+
 TEST_F(GlyphCli, LcdRowsHoldThreeBytesPerPixelAndBgrReversesThem) {
     json gray = run_json({kDejaVu, "--char", "e", "--font-size", "16"});
     json rgb = run_json({kDejaVu, "--char", "e", "--font-size", "16", "--lcd", "rgb"});

@@ -1,11 +1,8 @@
 // `bezel fill`: any vector path (SVG path data) rasterized by bezel into a W × H coverage image,
 // as PNG, PGM or ASCII art.
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <memory>
 
 #include "bezel/image.hpp"
@@ -33,20 +30,11 @@ struct FillArgs {
 const std::string kCommand = "bezel fill";
 
 Expected<FillFormat> pick_format(const FillArgs& args) {
-    std::string name = args.format;
-    if (name.empty() && !args.output_file.empty() && args.output_file != "-") {
-        std::string ext = std::filesystem::path(args.output_file).extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(),
-                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        if (ext == ".png") name = "png";
-        else if (ext == ".pgm") name = "pgm";
-        else if (ext == ".txt") name = "ascii";
-        else
-            return Error{args.output_file + ": cannot tell the format from the extension '" + ext +
-                         "' (.png, .pgm, .txt); use -O"};
-    }
-    if (name == "png") return FillFormat::Png;
-    if (name == "pgm") return FillFormat::Pgm;
+    auto name = pick_picture_format(args.format, args.output_file,
+                                    {{".png", "png"}, {".pgm", "pgm"}, {".txt", "ascii"}}, "ascii");
+    if (!name) return name.error();
+    if (*name == "png") return FillFormat::Png;
+    if (*name == "pgm") return FillFormat::Pgm;
     return FillFormat::Ascii;
 }
 
@@ -84,10 +72,8 @@ int run_fill(const FillArgs& args) {
         return fail_usage(s.error().message, kCommand);
     auto transform = parse_transform(args.transform);
     if (!transform) return fail_usage(transform.error().message, kCommand);
-    if (!(args.tolerance_px >= kMinFlattenTolerancePx && args.tolerance_px <= 100.0))
-        return fail_usage("--tolerance " + std::to_string(args.tolerance_px) +
-                              ": expected a number of pixels in [1e-9, 100]",
-                          kCommand);
+    if (Status t = check_tolerance(args.tolerance_px); !t)
+        return fail_usage(t.error().message, kCommand);
     auto path = parse_svg_path(args.path_data);
     if (!path) return fail_usage("PATH: " + path.error().message, kCommand);
 
@@ -143,18 +129,10 @@ Command add_fill_command(CLI::App& app) {
                     "png, pgm or ascii; default: from the -o file's extension, else ascii")
         ->type_name("FORMAT")
         ->check(CLI::IsMember({"png", "pgm", "ascii"}));
-    cmd->add_option("-o,--output-file", args->output_file,
-                    "Write here instead of stdout (atomically: no partial file on failure)")
-        ->type_name("FILE");
-    cmd->add_option("--fill", args->fill, "Fill rule: nonzero or evenodd")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"nonzero", "evenodd"}));
+    add_picture_options(*cmd, args->output_file, args->fill, args->tolerance_px);
     cmd->add_option("--transform", args->transform,
                     "Affine map a,b,c,d,e,f applied to the path (SVG matrix order)")
         ->type_name("A,B,C,D,E,F");
-    cmd->add_option("--tolerance", args->tolerance_px, "Flattening tolerance in pixels")
-        ->capture_default_str()
-        ->type_name("PX");
     cmd->add_option("--overlap", args->overlap,
                     "accumulate (plain area accumulation) or accurate (overlapping contours "
                     "resolved exactly)")

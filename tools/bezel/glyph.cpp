@@ -1,10 +1,7 @@
 // `bezel glyph`: glyph bitmaps from bezel's rasterizer, as ASCII art, JSON (a stable contract),
 // PNG or PGM/PPM. Boxes follow FreeType's bitmap_left / bitmap_top (glyph_bitmap.hpp).
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -22,7 +19,7 @@ struct GlyphArgs {
     FontArgs font;
     std::string chr, text, format, output_file;
     GlyphId gid = 0;
-    std::string fill = "nonzero", lcd, offset, flatten = "wang";
+    std::string fill = "nonzero", lcd, offset, flatten = "wang", overlap = "auto";
     double tolerance_px = kDefaultRasterTolerancePx;
     CLI::Option* gid_option = nullptr;
     CLI::Option* text_option = nullptr;
@@ -30,24 +27,16 @@ struct GlyphArgs {
 
 const std::string kCommand = "bezel glyph";
 
-// -O wins; else the -o file's extension (.txt, .json, .png, .pgm, .ppm); else ASCII on stdout.
+// -O wins; else the -o file's extension; else ASCII on stdout.
 Expected<GlyphFormat> pick_format(const GlyphArgs& args) {
-    std::string name = args.format;
-    if (name.empty() && !args.output_file.empty() && args.output_file != "-") {
-        std::string ext = std::filesystem::path(args.output_file).extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(),
-                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        if (ext == ".txt") name = "ascii";
-        else if (ext == ".json") name = "json";
-        else if (ext == ".png") name = "png";
-        else if (ext == ".pgm" || ext == ".ppm") name = "pgm";
-        else
-            return Error{args.output_file + ": cannot tell the format from the extension '" + ext +
-                         "' (.txt, .json, .png, .pgm, .ppm); use -O"};
-    }
-    if (name.empty() || name == "ascii") return GlyphFormat::Ascii;
-    if (name == "json") return GlyphFormat::Json;
-    if (name == "png") return GlyphFormat::Png;
+    auto name = pick_picture_format(args.format, args.output_file,
+                                    {{".txt", "ascii"}, {".json", "json"}, {".png", "png"},
+                                     {".pgm", "pgm"}, {".ppm", "pgm"}},
+                                    "ascii");
+    if (!name) return name.error();
+    if (*name == "ascii") return GlyphFormat::Ascii;
+    if (*name == "json") return GlyphFormat::Json;
+    if (*name == "png") return GlyphFormat::Png;
     return GlyphFormat::Pnm;
 }
 
@@ -116,10 +105,8 @@ int run_glyph(const GlyphArgs& args) {
     if (!format) return fail_usage(format.error().message, kCommand);
     auto offset = parse_offset(args.offset);
     if (!offset) return fail_usage(offset.error().message, kCommand);
-    if (!(args.tolerance_px >= kMinFlattenTolerancePx && args.tolerance_px <= 100.0))
-        return fail_usage("--tolerance " + std::to_string(args.tolerance_px) +
-                              ": expected a number of pixels in [1e-9, 100]",
-                          kCommand);
+    if (Status t = check_tolerance(args.tolerance_px); !t)
+        return fail_usage(t.error().message, kCommand);
     if (auto size_ok = check_font_size(args.font); !size_ok)
         return fail_runtime(size_ok.error().message);
 
@@ -133,6 +120,7 @@ int run_glyph(const GlyphArgs& args) {
                                         : GlyphMode::LcdRgb;
     settings.flatten.tolerance_px = args.tolerance_px;
     settings.flatten.method = method_named(args.flatten);
+    settings.overlap = args.overlap == "accurate" ? OverlapMode::Accurate : OverlapMode::Accumulate;
 
     auto font = open_font(args.font);
     if (!font) return fail_runtime(font.error().message);
@@ -184,8 +172,9 @@ Command add_glyph_command(CLI::App& app) {
         "FreeType places FT_Render_Glyph's bitmap: left = bitmap_left, top = bitmap_top (rows\n"
         "above the baseline), from the outline's control box in 26.6 at the pen (0,0) + --offset.\n"
         "Glyphs the font marks as overlapping (OVERLAP_SIMPLE/COMPOUND) use the accurate overlap\n"
-        "mode. --lcd samples 3x horizontally through FreeType's default 5-tap filter; the box is\n"
-        "one pixel wider on each side and each pixel has R, G, B subpixel coverage.\n"
+        "mode; --overlap accurate uses it for every glyph. --lcd samples 3x horizontally through\n"
+        "FreeType's default 5-tap filter; the box is one pixel wider on each side and each pixel\n"
+        "has R, G, B subpixel coverage.\n"
         "Formats: ascii (default; one character per pixel, per subpixel with --lcd); json, an\n"
         "array with one object per glyph: gid, name, char and code_point (when known), size,\n"
         "left, top, width (pixels), height, advance, mode (gray|lcd-rgb|lcd-bgr), overlap\n"
@@ -209,25 +198,21 @@ Command add_glyph_command(CLI::App& app) {
                     "ascii, json, png or pgm; default: from the -o file's extension, else ascii")
         ->type_name("FORMAT")
         ->check(CLI::IsMember({"ascii", "json", "png", "pgm"}));
-    cmd->add_option("-o,--output-file", args->output_file,
-                    "Write here instead of stdout (atomically: no partial file on failure)")
-        ->type_name("FILE");
-    cmd->add_option("--fill", args->fill, "Fill rule: nonzero or evenodd")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"nonzero", "evenodd"}));
+    add_picture_options(*cmd, args->output_file, args->fill, args->tolerance_px);
     cmd->add_option("--lcd", args->lcd, "LCD subpixel rendering for an rgb or bgr panel")
         ->type_name("ORDER")
         ->check(CLI::IsMember({"rgb", "bgr"}));
     cmd->add_option("--offset", args->offset, "Pen position DX,DY in pixels (x right, y down)")
         ->type_name("DX,DY");
-    cmd->add_option("--tolerance", args->tolerance_px, "Flattening tolerance in pixels")
-        ->capture_default_str()
-        ->type_name("PX");
     cmd->add_option("--flatten", args->flatten,
                     "Flattening method: wang, distance, parabola or classic")
         ->capture_default_str()
         ->type_name("METHOD")
         ->check(CLI::IsMember({"wang", "distance", "parabola", "classic"}));
+    cmd->add_option("--overlap", args->overlap,
+                    "auto (accurate for glyphs marked as overlapping) or accurate (for all)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"auto", "accurate"}));
     return Command{cmd, [args] { return run_glyph(*args); }};
 }
 

@@ -34,7 +34,8 @@ Expected<GlyphBitmap> measure_glyph(Font& font, const GlyphRequest& request,
     g.name = font.glyph_name(request.gid);
     g.code_point = request.code_point;
     g.advance_px = outline->metrics.advance_px;
-    g.accurate_overlap = outline->overlapping_contours;
+    g.accurate_overlap =
+        outline->overlapping_contours || settings.overlap == OverlapMode::Accurate;
     g.mode = settings.mode;
     const Rect& b = outline->metrics.bounds_px;   // control box, y down
     if (b.is_empty()) return g;

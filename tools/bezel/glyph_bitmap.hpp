@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bezel/expected.hpp"
@@ -13,7 +14,22 @@
 #include "bezel/image.hpp"
 #include "bezel/raster.hpp"
 
+namespace CLI { class App; }
+
 namespace bezel::cli {
+
+// Shared by `bezel glyph` and `bezel fill` (glyph_options.cpp).
+// The output format: `format_option` when given, else the one `extensions` maps the -o file's
+// extension to (".png" → "png", …, case-insensitive), else `fallback` (stdout). An unknown
+// extension is an error naming the file and the extensions known.
+Expected<std::string> pick_picture_format(
+    const std::string& format_option, const std::string& output_file,
+    const std::vector<std::pair<std::string, std::string>>& extensions, const std::string& fallback);
+// -o, --fill and --tolerance, bound to the given variables.
+void add_picture_options(CLI::App& cmd, std::string& output_file, std::string& fill,
+                         double& tolerance_px);
+// --tolerance must be a number of pixels in [kMinFlattenTolerancePx, 100].
+Status check_tolerance(double tolerance_px);
 
 // Most pixels one `bezel glyph` call renders over all its glyphs (LCD counts display pixels):
 // 2^24, i.e. a 4096 × 4096 glyph or a thousand 128 × 128 ones. The JSON form spends two hex digits
@@ -31,6 +47,9 @@ struct GlyphRenderSettings {
     FillRule rule = FillRule::NonZero;
     GlyphMode mode = GlyphMode::Gray;
     FlattenOptions flatten = raster_flatten_defaults();
+    // Accumulate: Accurate only for glyphs the font marks as overlapping; Accurate: for all
+    // (unmarked fonts have overlapping components too, e.g. 59 accented glyphs of DejaVu Sans).
+    OverlapMode overlap = OverlapMode::Accumulate;
 };
 
 // One rendered glyph. The box follows FreeType's FT_Render_Glyph: `left` = bitmap_left (columns
@@ -43,7 +62,7 @@ struct GlyphBitmap {
     std::optional<char32_t> code_point;
     double advance_px = 0;
     int left = 0, top = 0, width = 0, height = 0;   // width in display pixels
-    bool accurate_overlap = false;   // the font marks the contours as overlapping
+    bool accurate_overlap = false;   // rendered with OverlapMode::Accurate
     Path outline;                       // pixels, y down, pen at the origin (before the offset)
     GlyphMode mode = GlyphMode::Gray;
     std::vector<std::uint8_t> pixels;   // rows packed: width bytes, or 3·width for LCD (R, G, B)
@@ -58,8 +77,7 @@ struct GlyphRequest {
 // Loads the outline and computes the box (no pixels yet). Errors name the glyph.
 Expected<GlyphBitmap> measure_glyph(Font& font, const GlyphRequest& request,
                                     const GlyphRenderSettings& settings);
-// Renders into `glyph` (measured by measure_glyph with the same settings). Glyphs the font marks
-// as overlapping use OverlapMode::Accurate.
+// Renders into `glyph` (measured by measure_glyph with the same settings).
 Status render_glyph(Rasterizer& raster, const GlyphRenderSettings& settings, GlyphBitmap& glyph);
 
 const char* mode_name(GlyphMode mode);   // "gray", "lcd-rgb", "lcd-bgr"

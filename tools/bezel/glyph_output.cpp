@@ -110,7 +110,7 @@ std::string glyphs_ascii(const std::vector<GlyphBitmap>& glyphs, const GlyphRend
                number(s.size_px) + " px, " + mode_name(g.mode) + ": " + std::to_string(g.width) +
                "x" + std::to_string(g.height) + ", left " + std::to_string(g.left) + ", top " +
                std::to_string(g.top) + ", advance " + number(g.advance_px);
-        if (g.accurate_overlap) out += ", overlapping contours (accurate)";
+        if (g.accurate_overlap) out += ", accurate overlap";
         if (g.mode != GlyphMode::Gray) out += " (one character per subpixel)";
         out += "\n";
         const int row_bytes = g.width * g.bytes_per_pixel();
