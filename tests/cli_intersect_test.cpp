@@ -1,9 +1,6 @@
 // End-to-end tests of `bezel intersect` (BEZEL_CLI_PATH): the JSON contract (shape, key order,
 // 17 significant digits that read back to the library's doubles), self-intersection with one
 // path, overlaps, SVG and PNG output, and exit codes.
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -14,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/cli_run.hpp"
+
 #include "bezel/image.hpp"
 #include "bezel/intersect.hpp"
 
@@ -22,55 +21,20 @@ using nlohmann::json;
 
 namespace {
 
-struct CliRun {
-    int exit_code = -1;
-    std::string out, err;
-};
-
-std::string slurp(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using bezel::test::CliRun;
+using bezel::test::slurp;
 
 class CliIntersect : public ::testing::Test {
 protected:
-    void SetUp() override {
-        std::string tmpl = (fs::temp_directory_path() / "bezel-cli-isect-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-        dir_ = tmpl;
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+    bezel::test::TempDir tmp_{"bezel-cli-isect"};
+    const fs::path& dir_ = tmp_.path();
 
     // Runs the CLI with `args` (no shell) in dir_, stdout and stderr captured through files.
     CliRun run(std::vector<std::string> args) {
         args.insert(args.begin(), "intersect");
-        const fs::path out_file = dir_ / ".stdout", err_file = dir_ / ".stderr";
-        pid_t pid = ::fork();
-        if (pid == 0) {
-            int out = ::open(out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-            int err = ::open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-            if (out < 0 || err < 0 || ::chdir(dir_.c_str()) != 0) ::_exit(127);
-            ::dup2(out, 1);
-            ::dup2(err, 2);
-            std::string exe = BEZEL_CLI_PATH;
-            std::vector<char*> argv{exe.data()};
-            for (std::string& a : args) argv.push_back(a.data());
-            argv.push_back(nullptr);
-            ::execv(exe.c_str(), argv.data());
-            ::_exit(127);
-        }
-        CliRun r;
-        int status = 0;
-        if (pid < 0 || ::waitpid(pid, &status, 0) != pid) return r;
-        r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-        r.out = slurp(out_file);
-        r.err = slurp(err_file);
-        return r;
+        return bezel::test::run_bezel(args, dir_);
     }
 
-    fs::path dir_;
 };
 
 TEST_F(CliIntersect, JsonIsExactlyTheContract) {

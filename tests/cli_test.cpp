@@ -4,9 +4,6 @@
 // Reference values come from the fonts themselves (fontTools): DejaVu Sans has 2048 units/em,
 // so at --font-size 2048 an unhinted outline's pixel coordinates are exactly its font units with
 // y negated. Cantarell Regular is CFF with 1000 units/em.
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -20,6 +17,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/cli_run.hpp"
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -32,17 +31,8 @@ const std::string kEdge = std::string(BEZEL_FONTS_DIR) + "/edge-cases/EdgeCases.
 const std::string kEdgeVariable = std::string(BEZEL_FONTS_DIR) + "/edge-cases/EdgeCasesVariable.ttf";
 const std::string kEdgeCollection = std::string(BEZEL_FONTS_DIR) + "/edge-cases/EdgeCases.ttc";
 
-struct CliRun {
-    int exit_code = -1;
-    std::string out, err;
-};
-
-std::string slurp(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using bezel::test::CliRun;
+using bezel::test::slurp;
 
 std::size_t count_lines(const std::string& s) {
     std::size_t n = 0;
@@ -60,41 +50,12 @@ std::size_t count(const std::string& haystack, const std::string& needle) {
 
 class Cli : public ::testing::Test {
 protected:
-    void SetUp() override {
-        std::string tmpl = (fs::temp_directory_path() / "bezel-cli-test-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(tmpl.data()), nullptr);
-        dir_ = tmpl;
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+    bezel::test::TempDir tmp_{"bezel-cli-test"};
+    const fs::path& dir_ = tmp_.path();
 
     // Runs the CLI with `args` (no shell), stdout and stderr captured through files in dir_.
     CliRun run(const std::vector<std::string>& args) {
-        const fs::path out_file = dir_ / ".stdout", err_file = dir_ / ".stderr";
-        pid_t pid = ::fork();
-        if (pid == 0) {
-            int out = ::open(out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-            int err = ::open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-            if (out < 0 || err < 0 || ::chdir(dir_.c_str()) != 0) ::_exit(127);
-            ::dup2(out, 1);
-            ::dup2(err, 2);
-            std::vector<char*> argv;
-            std::string exe = BEZEL_CLI_PATH;
-            argv.push_back(exe.data());
-            std::vector<std::string> copy = args;
-            for (std::string& a : copy) argv.push_back(a.data());
-            argv.push_back(nullptr);
-            ::execv(exe.c_str(), argv.data());
-            ::_exit(127);
-        }
-        CliRun r;
-        int status = 0;
-        if (pid < 0 || ::waitpid(pid, &status, 0) != pid) return r;
-        r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-        r.out = slurp(out_file);
-        r.err = slurp(err_file);
-        fs::remove(out_file);
-        fs::remove(err_file);
-        return r;
+        return bezel::test::run_bezel(args, dir_);
     }
 
     // The outline JSON of `args`, checked to succeed.
@@ -108,13 +69,7 @@ protected:
     }
 
     // Files in the temp dir other than the captured stdout/stderr.
-    std::vector<std::string> files() const {
-        std::vector<std::string> names;
-        for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename());
-        return names;
-    }
-
-    fs::path dir_;
+    std::vector<std::string> files() const { return tmp_.entries(); }
 };
 
 // Usage errors: exit 2, CLI11's message on the first line, a --help hint on the second.

@@ -1,7 +1,6 @@
 // `bezel smooth` and `bezel continuity` end to end: the JSON contract, reading the tool's own
 // output back, exit codes and error lines. Runs the built CLI binary.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -11,51 +10,23 @@
 #include <string>
 
 #include "bezel/smooth.hpp"
+#include "support/cli_run.hpp"
 
 namespace {
 
-// The CLI binary (tests/CMakeLists.txt defines BEZEL_CLI_PATH for *_cli_test files when the
-// tools are built, and builds the CLI first).
-std::string cli_path() {
-#ifdef BEZEL_CLI_PATH
-    return BEZEL_CLI_PATH;
-#else
-    return "";
-#endif
-}
+using bezel::test::CliRun;
 
-struct CliRun {
-    int exit_code = -1;
-    std::string out, err;
-};
-
-// Runs `bezel <args>` through the shell; args are written as on a command line.
+// Runs `bezel <args>` with args written as on a shell command line (single quotes only), in a
+// scratch directory.
 CliRun run(const std::string& args) {
-    static int counter = 0;
-    std::string err_file = (std::filesystem::temp_directory_path() /
-                            ("bezel-smooth-cli-" + std::to_string(::getpid()) + "-" +
-                             std::to_string(counter++) + ".err"))
-                               .string();
-    std::string cmd = "'" + cli_path() + "' " + args + " 2>'" + err_file + "'";
-    CliRun r;
-    FILE* p = ::popen(cmd.c_str(), "r");
-    if (!p) return r;
-    char buf[4096];
-    std::size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) r.out.append(buf, n);
-    int status = ::pclose(p);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream e(err_file);
-    r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
-    std::filesystem::remove(err_file);
-    return r;
+    static bezel::test::TempDir dir("bezel-smooth-cli");
+    return bezel::test::run_bezel(bezel::test::split_args(args), dir.path());
 }
 
 class SmoothCli : public ::testing::Test {
 protected:
     void SetUp() override {
-        if (cli_path().empty()) GTEST_SKIP() << "the CLI is not built (BEZEL_BUILD_TOOLS=OFF)";
-        ASSERT_TRUE(std::filesystem::exists(cli_path())) << cli_path();
+        ASSERT_TRUE(std::filesystem::exists(bezel::test::cli_path())) << bezel::test::cli_path();
     }
 };
 
