@@ -196,7 +196,9 @@ Expected<ShapedRun> Shaper::shape(std::string_view utf8, const ShapeOptions& opt
         im.features.push_back(hf);
     }
 
-    const int scale = static_cast<int>(std::lround(options.size_px * kUnitsPerPx));
+    // At least one unit: a size below 1/2048 px would round the scale to 0 and divide by it
+    // (fuzz_text). Such a text is far below a pixel either way; its positions stay finite.
+    const int scale = std::max(1, static_cast<int>(std::lround(options.size_px * kUnitsPerPx)));
     if (scale != im.scale) {
         hb_font_set_scale(im.font, scale, scale);
         im.scale = scale;
