@@ -152,8 +152,9 @@ private:
 // (x, y) (parts outside the image are clipped), in linear light: for each channel
 // out = enc(lerp(dec(dst), dec(color), coverage·color.a)). Alpha is composited "over".
 void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color);
-// The same for an LCD mask (3 bytes per pixel, `mask.width` = 3 × pixels, in the order given):
-// each colour channel uses its own subpixel coverage.
+// The same for an LCD mask (3 bytes per pixel, `mask.width` = 3 × pixels; bytes R, G, B, or
+// B, G, R when `bgr`): each colour channel uses its own subpixel coverage. Masks from
+// Rasterizer::fill_path_lcd are always R, G, B in memory (for either panel order): pass false.
 void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, bool bgr);
 
 // PNG colour layouts for writing.

@@ -116,8 +116,9 @@ Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOpti
         if (options.mode == RenderMode::Gray)
             blend_mask(page, c.mask, x, y, options.foreground);
         else
-            blend_lcd_mask(page, c.mask, x, y, options.foreground,
-                           options.mode == RenderMode::LcdBgr);
+            // fill_path_lcd already stores R, G, B coverage per pixel whatever the panel's
+            // order (a BGR panel's samples are reversed there), so the bytes are RGB here.
+            blend_lcd_mask(page, c.mask, x, y, options.foreground, /*bgr=*/false);
     }
     return page;
 }
