@@ -1,5 +1,7 @@
 // `bezel render` end to end: the default sample to PNG, formats from the file name, the same
 // pixels as the library, PNG colour types, and bad input (one error line, exit 1 or 2, no file).
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -58,6 +60,60 @@ TEST(RenderCli, PixelsEqualTheLibrarysAndFormatFollowsTheFileName) {
     ASSERT_EQ(run.exit_code, 0) << run.err;
     EXPECT_NE(run.out.find("\x1b[38;2;"), std::string::npos);
     EXPECT_NE(run.out.find("\xe2\x96\x80"), std::string::npos);
+}
+
+// --stroke W draws each glyph's outline instead of filling it: the ink of an outlined 'O' is a
+// band along the filled O's boundary (every dark pixel within W/2 + 2 px of a filled edge), it
+// leaves the inside of the letter's stroke white, and it is less ink than the filled letter.
+TEST(RenderCli, StrokeDrawsTheGlyphOutlinesInsteadOfFillingThem) {
+    test::TempDir dir("bezel-render-stroke");
+    auto filled = run_bezel({"render", kDejaVu, "O", "--font-size", "96", "-o", "f.png"},
+                            dir.path());
+    ASSERT_EQ(filled.exit_code, 0) << filled.err;
+    auto outlined = run_bezel(
+        {"render", kDejaVu, "O", "--font-size", "96", "--stroke", "2", "-o", "s.png"}, dir.path());
+    ASSERT_EQ(outlined.exit_code, 0) << outlined.err;
+    auto f = read_png_gray((dir.path() / "f.png").string());
+    auto s = read_png_gray((dir.path() / "s.png").string());
+    ASSERT_TRUE(f && s);
+    ASSERT_EQ(f->width(), s->width());
+    ASSERT_EQ(f->height(), s->height());
+    int filled_ink = 0, outlined_ink = 0, inner_white = 0;
+    for (int y = 0; y < f->height(); ++y)
+        for (int x = 0; x < f->width(); ++x) {
+            filled_ink += f->at(x, y) < 128;
+            if (s->at(x, y) >= 64) continue;
+            ++outlined_ink;
+            bool dark = false, light = false;   // the filled O's edge within 3 px
+            for (int dy = -3; dy <= 3; ++dy)
+                for (int dx = -3; dx <= 3; ++dx) {
+                    const int u = std::clamp(x + dx, 0, f->width() - 1);
+                    const int v = std::clamp(y + dy, 0, f->height() - 1);
+                    (f->at(u, v) < 128 ? dark : light) = true;
+                }
+            EXPECT_TRUE(dark && light) << "ink far from the outline at " << x << "," << y;
+        }
+    // Pixels deep inside the filled O's ring (no light pixel within 3 px) stay white.
+    for (int y = 4; y + 4 < f->height(); ++y)
+        for (int x = 4; x + 4 < f->width(); ++x) {
+            bool deep = true;
+            for (int d = -3; d <= 3 && deep; ++d)
+                deep = f->at(x + d, y) < 16 && f->at(x, y + d) < 16;
+            if (!deep) continue;
+            ++inner_white;
+            EXPECT_GT(s->at(x, y), 200) << x << "," << y;
+        }
+    EXPECT_GT(inner_white, 50);
+    EXPECT_GT(outlined_ink, 200);
+    EXPECT_LT(outlined_ink, filled_ink);
+
+    auto lcd = run_bezel({"render", "O", "--stroke", "2", "--lcd", "rgb", "-o", "l.png"},
+                         dir.path());
+    EXPECT_EQ(lcd.exit_code, 2);
+    EXPECT_NE(lcd.err.find("--stroke"), std::string::npos) << lcd.err;
+    auto wide = run_bezel({"render", "O", "--stroke", "5000", "-o", "w.png"}, dir.path());
+    EXPECT_EQ(wide.exit_code, 2);
+    EXPECT_EQ(dir.entries(), (std::vector<std::string>{"f.png", "s.png"}));
 }
 
 TEST(RenderCli, PngColourTypeFollowsTheColours) {

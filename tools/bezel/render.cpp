@@ -4,11 +4,14 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <memory>
 
+#include "bezel/stroke.hpp"
 #include "bezel/text.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
@@ -28,6 +31,11 @@ constexpr double kDefaultRenderSizePx = 20.0;
 constexpr double kDefaultPreviewSizePx = 10.0;
 constexpr double kDefaultMarginPx = 16.0;   // hb-view's default margin
 constexpr double kDefaultPreviewMarginPx = 1.0;
+// Widest --stroke, px: past it the stroke buries the text at any size a page uses, and the
+// stroker's work grows with the width.
+constexpr double kMaxStrokePx = 1000.0;
+// Most pixels of an outlined page (as TextRenderer's page limit: 64 Mpx, 256 MiB of RGBA).
+constexpr double kMaxOutlinedPagePixels = double{1 << 26};
 
 struct RenderArgs {
     FontArgs font;
@@ -44,6 +52,7 @@ struct RenderArgs {
     std::string foreground = "#000000";
     std::string background = "#FFFFFF";
     std::string lcd;            // --lcd rgb|bgr
+    double stroke_px = 0;       // --stroke: outlined text this wide; 0 = filled glyphs
     std::string format;         // -O
     std::string output_file;    // -o
     CLI::App* cmd = nullptr;
@@ -79,6 +88,56 @@ Expected<std::string> read_text_file(const std::string& file) {
     if (!text.empty() && text.back() == '\n') text.pop_back();
     if (!text.empty() && text.back() == '\r') text.pop_back();
     return text;
+}
+
+// Outlined text (--stroke W): each glyph's outline stroked W px wide (round joins, so corners
+// keep their shape at any width) instead of filled. The stroke's pieces overlap by design, so they
+// are filled with the accurate overlap mode; each glyph is stroked, rasterized into its own box
+// and blended at its pen, bypassing the glyph cache (a stroked glyph is not a cached bitmap;
+// one CLI call can afford stroking every placed glyph).
+Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
+                                const TextRenderOptions& options, double stroke_px) {
+    Font& font = renderer.font();
+    if (auto set = font.set_variations(options.shape.variations); !set) return set.error();
+    auto layout = layout_text(renderer.shaper(), font.metrics(), text, options.shape,
+                              options.layout);
+    if (!layout) return layout.error();
+    const double w = std::ceil(layout->width), h = std::ceil(layout->height);
+    if (!(w <= kMaxImageDim && h <= kMaxImageDim && w * h <= kMaxOutlinedPagePixels))
+        return Error{"text page of " + std::to_string(static_cast<long>(w)) + "x" +
+                     std::to_string(static_cast<long>(h)) + " px is too large"};
+    Image page(std::max(1, static_cast<int>(w)), std::max(1, static_cast<int>(h)),
+               options.background);
+
+    StrokeStyle style;
+    style.width = stroke_px;
+    style.join = LineJoin::Round;
+    Rasterizer rasterizer;
+    Mask coverage;
+    for (const PlacedGlyph& g : layout->glyphs) {
+        auto outline = font.outline(g.gid, OutlineOptions{options.shape.size_px, false});
+        if (!outline) return outline.error();
+        if (outline->path.empty()) continue;
+        auto stroked = stroke(outline->path, style);
+        if (!stroked) return Error{font.file() + ": glyph " + std::to_string(g.gid) + ": " +
+                                   stroked.error().message};
+        const Rect b = stroked->bounds();
+        // The glyph's box in page pixels, clipped to the page (a pen far off the page draws
+        // nothing, and the box never exceeds the page).
+        const double x0 = std::max(0.0, std::floor(g.x + b.x0));
+        const double y0 = std::max(0.0, std::floor(g.y + b.y0));
+        const double x1 = std::min<double>(page.width(), std::ceil(g.x + b.x1));
+        const double y1 = std::min<double>(page.height(), std::ceil(g.y + b.y1));
+        if (!(x1 > x0 && y1 > y0)) continue;
+        coverage = Mask(static_cast<int>(x1 - x0), static_cast<int>(y1 - y0));
+        auto filled = rasterizer.fill_path(*stroked, Affine::translate({g.x - x0, g.y - y0}),
+                                           FillRule::NonZero, OverlapMode::Accurate,
+                                           coverage.view());
+        if (!filled) return filled.error();
+        blend_mask(page, coverage.view(), static_cast<int>(x0), static_cast<int>(y0),
+                   options.foreground);
+    }
+    return page;
 }
 
 int run_render(RenderArgs& args) {
@@ -119,6 +178,9 @@ int run_render(RenderArgs& args) {
                    : args.lcd == "bgr" ? RenderMode::LcdBgr
                                        : RenderMode::LcdRgb;
 
+    if (args.stroke_px > 0 && options.mode != RenderMode::Gray)
+        return fail_usage("--stroke draws gray coverage; it does not combine with --lcd", kCommand);
+
     if (preview && args.cmd->count("--margin") == 0) args.margin_px = kDefaultPreviewMarginPx;
     options.layout.margin_px = args.margin_px;
     options.layout.width_px = args.width_px;
@@ -140,7 +202,8 @@ int run_render(RenderArgs& args) {
 
     auto renderer = TextRenderer::open(args.font.file, args.font.face_index);
     if (!renderer) return fail_runtime(renderer.error().message);
-    auto page = renderer->render(text, options);
+    auto page = args.stroke_px > 0 ? render_outlined(*renderer, text, options, args.stroke_px)
+                                   : renderer->render(text, options);
     if (!page) return fail_runtime(page.error().message);
 
     const bool gray = options.mode == RenderMode::Gray && fg->r == fg->g && fg->g == fg->b &&
@@ -171,6 +234,7 @@ Command add_render_command(CLI::App& app) {
         "  bezel render -o hello.png\n"
         "  bezel render DejaVuSans.ttf 'Wafer office' --font-size 48 --features=-liga -o w.png\n"
         "  bezel render --text-file page.txt --width 640 --align center -o page.png\n"
+        "  bezel render 'Outline' --font-size 96 --stroke 2 -o outline.png\n"
         "  bezel render -O ansi 'Hello'");
     add_font_args(*cmd, args->font);
     cmd->add_option("TEXT", args->text, "The text (UTF-8); default: a sample paragraph");
@@ -207,6 +271,11 @@ Command add_render_command(CLI::App& app) {
     cmd->add_option("--lcd", args->lcd, "LCD subpixel rendering for rgb or bgr panels")
         ->type_name("ORDER")
         ->check(CLI::IsMember({"rgb", "bgr"}));
+    cmd->add_option("--stroke", args->stroke_px,
+                    "Outlined text: stroke each glyph's outline this many pixels wide (round "
+                    "joins) instead of filling it")
+        ->type_name("PX")
+        ->check(CLI::Range(0.0, kMaxStrokePx));
     cmd->add_option("-O,--output-format", args->format,
                     "png, pgm, ppm or ansi; default: from the -o file's extension")
         ->type_name("FORMAT");
