@@ -13,13 +13,16 @@
 #include "bezel/text.hpp"
 
 #if defined(__SANITIZE_ADDRESS__)
-#include <sanitizer/allocator_interface.h>
 #define BEZEL_HEAP_FROM_ASAN 1
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer)
-#include <sanitizer/allocator_interface.h>
 #define BEZEL_HEAP_FROM_ASAN 1
 #endif
+#endif
+#ifdef BEZEL_HEAP_FROM_ASAN
+// ASan's public allocator interface, declared here because g++'s packages do not always ship
+// <sanitizer/allocator_interface.h> (Debian's g++ 12 does not).
+extern "C" std::size_t __sanitizer_get_current_allocated_bytes();
 #endif
 
 namespace bezel {
