@@ -243,6 +243,18 @@ TEST(SelfIntersect, CollinearCubicFoldingBackOverlapsItself) {
     EXPECT_NEAR(c.eval(o.t_a0).x, 1.0, 1e-12);
 }
 
+TEST(SelfIntersect, FoldAtThePrecisionLimitIsReportedInOrderWithoutTwins) {
+    // A fuzzer's cubic: out to 2^50 px and back to within 71 px of its start, flat to 1e-14 of
+    // its size. Its loop and its fold both report; the result still keeps the contract's order.
+    CubicBez c = cubic(1e-300, -33.5, -13, -50.5, 1125899906842624.0, -8.5, 1e-300, 37.5);
+    auto r = must(self_intersect(c));
+    for (std::size_t i = 1; i < r.points.size(); ++i) {
+        const auto &q = r.points[i - 1], &p = r.points[i];
+        EXPECT_TRUE(q.t_a < p.t_a || (q.t_a == p.t_a && q.t_b < p.t_b)) << i;
+    }
+    for (const auto& p : r.points) EXPECT_LT(p.t_a, p.t_b);
+}
+
 TEST(SelfIntersect, NonFiniteIsAnError) {
     auto r = self_intersect(cubic(0, 0, NAN, 1, 2, 2, 3, 3));
     ASSERT_FALSE(r.ok());

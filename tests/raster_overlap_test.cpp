@@ -228,6 +228,38 @@ TEST(OverlapAccurate, ClipsLikePlainOutsideTheTarget) {
             EXPECT_NEAR(acc.at(x, y), 255.0 * union_coverage(a, b, x, y), 0.5 + 1e-6);
 }
 
+TEST(OverlapAccurate, HugeAndNearlyFlatEdgesGiveTheExactUnion) {
+    // A half-plane x < 3.25 whose far corners are ±2^49 px away, overlapped by a box whose top
+    // edge rises by a subnormal amount: that edge's slope is infinite, and 0·∞ at its top end
+    // made NaN coverage (a fuzzer finding).
+    const double far = 0x1p49;
+    Path p;
+    p.move_to({-far, -far});
+    p.line_to({3.25, -far});
+    p.line_to({3.25, far});
+    p.line_to({-far, far});
+    p.close();
+    p.move_to({2.5, 1.5});
+    p.line_to({6.75, 1.5 + 4.9e-324});
+    p.line_to({6.75, 4.0});
+    p.line_to({2.5, 4.0});
+    p.close();
+    Rasterizer r;
+    const Box a{-10, -10, 3.25, 18}, b{2.5, 1.5, 6.75, 4.0};
+    for (FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
+        const Mask acc = render(r, p, OverlapMode::Accurate, 8, 8, rule);
+        for (int y = 0; y < 8; ++y)
+            for (int x = 0; x < 8; ++x) {
+                // Even-odd: the overlap is a hole.
+                const Box both{2.5, 1.5, 3.25, 4.0};
+                const double want = rule == FillRule::NonZero
+                                        ? union_coverage(a, b, x, y)
+                                        : union_coverage(a, b, x, y) - area_in_pixel(both, x, y);
+                EXPECT_NEAR(acc.at(x, y), 255.0 * want, 0.5 + 1e-6) << x << "," << y;
+            }
+    }
+}
+
 TEST(OverlapAccurate, HostileOverlapStaysBoundedAndDegradesToPlain) {
     // A triangle over rows 0–40 and 400 copies of a small one over rows 20–40: those rows have
     // 802 active edges, past kMaxOverlapRowWork, so they keep the plain accumulation while the

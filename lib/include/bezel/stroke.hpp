@@ -23,11 +23,13 @@ namespace bezel {
 enum class LineJoin : std::uint8_t { Miter, Round, Bevel };
 enum class LineCap : std::uint8_t { Butt, Round, Square };
 
-// Most output segments one stroke may produce (4 Mi); past it, an Error rather than an
-// unbounded allocation.
-inline constexpr std::size_t kMaxStrokeSegments = std::size_t{1} << 22;
-// Most dash intervals one stroke may emit (1 Mi): a tiny dash over a long path is an Error.
-inline constexpr std::size_t kMaxDashes = std::size_t{1} << 20;
+// Most output segments one stroke may produce (1 Mi, about 50 MB of Path); past it, an Error
+// rather than an unbounded allocation. A dashed stroke whose dashes alone would pass it (each
+// dash is at least its two sides and two caps) fails before any dash is made.
+inline constexpr std::size_t kMaxStrokeSegments = std::size_t{1} << 20;
+// Most dash intervals one stroke or dash() may emit (256 Ki): a tiny dash over a long path is
+// an Error. Both bounds keep one call to about a second of work in the sanitized builds.
+inline constexpr std::size_t kMaxDashes = std::size_t{1} << 18;
 
 struct StrokeStyle {
     double width = 1;                  // full width, > 0, in path units

@@ -141,6 +141,18 @@ Expected<CurveIntersections> self_intersect(const Curve& c) {
                                                     : IntersectionKind::Cross;
         out.points.push_back(ci);
     }
+    // The contract's order (by t_a, then t_b) and no twins: the loop and the collinear fold each
+    // give their hits in their own order, and on a fold at the precision limit (a 2^50 px cubic
+    // doubling back within 70 px, a fuzzer's) both report.
+    const auto by_t = [](const CurveIntersection& l, const CurveIntersection& r) {
+        return l.t_a < r.t_a || (l.t_a == r.t_a && l.t_b < r.t_b);
+    };
+    std::sort(out.points.begin(), out.points.end(), by_t);
+    out.points.erase(std::unique(out.points.begin(), out.points.end(),
+                                 [](const CurveIntersection& l, const CurveIntersection& r) {
+                                     return l.t_a == r.t_a && l.t_b == r.t_b;
+                                 }),
+                     out.points.end());
     out.overlaps = raw.overlaps;
     std::sort(out.overlaps.begin(), out.overlaps.end(),
               [](const CurveOverlap& l, const CurveOverlap& r) { return l.t_a0 < r.t_a0; });

@@ -10,6 +10,8 @@
 // the rounding noise of an exact contact can make g change sign around it.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <utility>
 #include <numeric>
 
 #include "intersect/curve_ops.hpp"
@@ -152,16 +154,35 @@ struct Scan {
 
 void resolve_leaves(const Curve& a, const Curve& b, std::vector<Leaf>& leaves, Raw& raw) {
     const double w = std::ldexp(1.0, -kIntersectLeafDepth);
-    std::sort(leaves.begin(), leaves.end(),
-              [](const Leaf& l, const Leaf& r) { return l.s0 < r.s0; });
     const int n = static_cast<int>(leaves.size());
     std::vector<int> parent(leaves.size());
     std::iota(parent.begin(), parent.end(), 0);
-    // Leaves touching (within one leaf width) in both parameters belong to one cluster.
-    for (int i = 0; i < n; ++i)
-        for (int j = i + 1; j < n && leaves[j].s0 <= leaves[i].s1 + w; ++j)
-            if (leaves[j].t0 <= leaves[i].t1 + w && leaves[i].t0 <= leaves[j].t1 + w)
-                parent[find_root(parent, j)] = find_root(parent, i);
+    // Leaves touching (within one leaf width) in both parameters belong to one cluster. Every
+    // leaf is at most w wide (curve_curve stops halving there), so touching leaves i, j have
+    // |s0_j − s0_i| ≤ 2w and |t0_j − t0_i| ≤ 2w: their grid cells (s0/w, t0/w) differ by at
+    // most 2 in each direction. Looking up those 25 cells in the sorted cell list keeps this
+    // O(n log n); comparing all pairs in a band of s was quadratic when many leaves share a
+    // stretch of s (a fuzzer's near-coincident pair took minutes).
+    auto cell = [w](double v) { return static_cast<std::int64_t>(std::floor(v / w)); };
+    std::vector<std::pair<std::pair<std::int64_t, std::int64_t>, int>> cells(leaves.size());
+    for (int i = 0; i < n; ++i) cells[i] = {{cell(leaves[i].s0), cell(leaves[i].t0)}, i};
+    std::sort(cells.begin(), cells.end());
+    for (int i = 0; i < n; ++i) {
+        const std::int64_t cs = cell(leaves[i].s0), ct = cell(leaves[i].t0);
+        for (std::int64_t ds = -2; ds <= 2; ++ds) {
+            auto lo = std::lower_bound(cells.begin(), cells.end(),
+                                       std::make_pair(std::make_pair(cs + ds, ct - 2), -1));
+            for (auto it = lo; it != cells.end() && it->first.first == cs + ds &&
+                               it->first.second <= ct + 2;
+                 ++it) {
+                const int j = it->second;
+                if (j == i) continue;
+                if (leaves[j].s0 <= leaves[i].s1 + w && leaves[i].s0 <= leaves[j].s1 + w &&
+                    leaves[j].t0 <= leaves[i].t1 + w && leaves[i].t0 <= leaves[j].t1 + w)
+                    parent[find_root(parent, j)] = find_root(parent, i);
+            }
+        }
+    }
 
     std::vector<Leaf> box(leaves.size(), Leaf{HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL});
     std::vector<int> count(leaves.size(), 0);

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <type_traits>
 
+#include "raster/accumulate.hpp"
 #include "raster/render_flatten.hpp"
 
 namespace bezel {
@@ -30,8 +31,18 @@ void flatten_like_fill_path(const Path& path, const Affine& m, const FlattenOpti
     (void)flatten_checked(path, m, options, out);  // succeeded in fill_path already
 }
 
-void build_edges(const Polylines& lines, std::vector<UnionEdge>& edges) {
+// The polygon's edges clipped to the target box [0, W] × [0, H] as the plain fill clips them
+// (accumulate.hpp: parts above or below dropped, parts left of it vertical at x = 0, parts right
+// of it at x = W). Winding numbers inside the box are unchanged, and every coordinate stays in
+// the box, so crossings keep pixel-level precision on edges up to kMaxFlattenCoordinatePx long.
+void build_edges(const Polylines& lines, int width, int height, std::vector<UnionEdge>& edges) {
     edges.clear();
+    const auto add = [&edges](double x0, double y0, double x1, double y1) {
+        const bool down = y1 > y0;
+        const Point p{x0, y0}, q{x1, y1};
+        const Point t = down ? p : q, b = down ? q : p;
+        edges.push_back({t.x, t.y, b.x, b.y, (b.x - t.x) / (b.y - t.y), down ? 1 : -1});
+    };
     const Point* pts = lines.points.data();
     std::size_t start = 0;
     for (std::size_t end : lines.contour_ends) {
@@ -39,11 +50,8 @@ void build_edges(const Polylines& lines, std::vector<UnionEdge>& edges) {
             Point p = pts[end - 1];  // the closing edge first
             for (std::size_t k = start; k < end; ++k) {
                 const Point q = pts[k];
-                if (p.y != q.y) {  // a horizontal edge changes no winding number
-                    const bool down = q.y > p.y;
-                    const Point t = down ? p : q, b = down ? q : p;
-                    edges.push_back({t.x, t.y, b.x, b.y, (b.x - t.x) / (b.y - t.y), down ? 1 : -1});
-                }
+                // A horizontal edge changes no winding number; clip_line drops it.
+                clip_line(width, height, p.x, p.y, q.x, q.y, add);
                 p = q;
             }
         }
@@ -145,7 +153,7 @@ void fill_region_exact(const Path& path, const Affine& transform, FillRule rule,
     const int W = target.width, H = target.height;
     if (W <= 0 || H <= 0) return;
     flatten_like_fill_path(path, transform, options, s.lines);
-    build_edges(s.lines, s.edges);
+    build_edges(s.lines, W, H, s.edges);
     if (s.edges.empty()) return;  // fill_path has already written zeros
     s.cells.assign(static_cast<std::size_t>(W) + 2, 0.0);
     s.active.clear();

@@ -27,6 +27,7 @@
 // OverlapMode::Accumulate in those rows instead of running away.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -50,7 +51,13 @@ struct UnionEdge {
     double x_top, y_top, x_bot, y_bot;
     double dxdy;    // x change per unit of y
     int winding;    // +1 for an edge drawn downwards, −1 upwards
-    double x_at(double y) const { return x_top + (y - y_top) * dxdy; }
+    // Clamped to the edge's x range: a nearly horizontal edge (dy subnormal) has an infinite
+    // dxdy, and 0·∞ at its top would be NaN (a fuzzer finding).
+    double x_at(double y) const {
+        if (!(y > y_top)) return x_top;
+        const double x = x_top + (y - y_top) * dxdy;
+        return x_bot > x_top ? std::min(x, x_bot) : std::max(x, x_bot);
+    }
 };
 
 struct SlabEdge {

@@ -102,6 +102,11 @@ void emit(Path& out, const Dash& d, bool close) {
 }  // namespace
 
 Expected<Path> dash(const Path& path, const std::vector<double>& dashes, double dash_offset) {
+    return stroke_detail::dash_limited(path, dashes, dash_offset, {});
+}
+
+Expected<Path> stroke_detail::dash_limited(const Path& path, const std::vector<double>& dashes,
+                                           double dash_offset, const DashLimit& limit) {
     if (auto ok = stroke_detail::check_dashes(dashes, dash_offset); !ok) return ok.error();
     if (!path.is_finite()) return Error{"dash: the path has a non-finite coordinate"};
     if (dashes.empty()) return path;
@@ -113,8 +118,10 @@ Expected<Path> dash(const Path& path, const std::vector<double>& dashes, double 
 
     std::vector<ContourInput> contours = stroke_detail::contours_of(path);
     std::vector<std::vector<Measured>> measured(contours.size());
-    // Each period holds n/2 dashes; a contour starts at most one extra.
-    double estimate = 0;
+    // Each period holds n/2 dashes; a contour starts at most one extra. Checked before any
+    // dash is made, so an input far past the limit costs only the measuring.
+    double estimate = 0, counted = 0;
+    for (std::size_t i = 0; i < n; i += 2) counted += pattern[i] > 0 || limit.count_empty;
     for (std::size_t c = 0; c < contours.size(); ++c) {
         double total = 0;
         for (const PathSeg& s : contours[c].segs) total += measured[c].emplace_back(s).length();
@@ -124,6 +131,17 @@ Expected<Path> dash(const Path& path, const std::vector<double>& dashes, double 
         return Error{"dash pattern: about " + stroke_detail::num(estimate) +
                      " dashes over this path, more than kMaxDashes (" +
                      std::to_string(kMaxDashes) + ")"};
+    // The dashes the caller will turn into output (a zero-length one may make none), at the
+    // fewest segments each: past the caller's bound the result could only fail later, slowly.
+    const double made = estimate * counted / static_cast<double>(n / 2);
+    if (limit.segments_per_dash > 0 &&
+        !(made * static_cast<double>(limit.segments_per_dash) <=
+          static_cast<double>(limit.max_segments)))
+        return Error{"dash pattern: about " + stroke_detail::num(made) + " dashes of at least " +
+                     std::to_string(limit.segments_per_dash) +
+                     " verbs each: the outline would exceed " +
+                     std::to_string(limit.max_segments) +
+                     " segments (kMaxStrokeSegments); lengthen the dashes or shorten the path"};
 
     // Where the pattern stands at the start of every contour.
     double phase = std::fmod(dash_offset, period);

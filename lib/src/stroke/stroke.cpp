@@ -89,7 +89,16 @@ Expected<Path> stroke(const Path& path, const StrokeStyle& style) {
     Path dashed;
     const Path* src = &path;
     if (!style.dashes.empty()) {
-        auto d = dash(path, style.dashes, style.dash_offset);
+        // Every stroked dash is at least a Move, its two sides, two caps (a butt cap is one
+        // line, a round one two arcs, a square one three lines) and a Close; a zero-length dash
+        // with butt caps makes nothing.
+        DashLimit limit;
+        limit.segments_per_dash = style.cap == LineCap::Butt    ? 6
+                                  : style.cap == LineCap::Round ? 8
+                                                                : 10;
+        limit.max_segments = kMaxStrokeSegments;
+        limit.count_empty = style.cap != LineCap::Butt;
+        auto d = dash_limited(path, style.dashes, style.dash_offset, limit);
         if (!d) return d.error();
         dashed = std::move(*d);
         src = &dashed;

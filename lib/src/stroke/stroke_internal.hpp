@@ -76,6 +76,17 @@ void stroke_contour(const ContourInput& contour, const StrokeStyle& style, doubl
 // closing line included) — also contours without segments.
 std::vector<ContourInput> contours_of(const Path& path);
 
+// dash() with a bound on what the caller makes of the dashes: with segments_per_dash > 0, a
+// pattern whose dashes (those of positive length, or all when count_empty) times
+// segments_per_dash would pass max_segments is an Error before any dash is made.
+struct DashLimit {
+    std::size_t segments_per_dash = 0;  // output verbs per dash at least; 0: only kMaxDashes
+    std::size_t max_segments = 0;
+    bool count_empty = true;  // zero-length dashes make output too (round or square caps)
+};
+Expected<Path> dash_limited(const Path& path, const std::vector<double>& dashes,
+                            double dash_offset, const DashLimit& limit);
+
 // Checks a dash pattern and offset; the message names the bad value.
 Status check_dashes(const std::vector<double>& dashes, double dash_offset);
 
