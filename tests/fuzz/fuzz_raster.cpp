@@ -98,11 +98,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (raster.fill_path(path, transform, rule, bezel::FloatMaskView{fmask.data(), w, h, w},
                              options))
             for (float f : fmask) BEZEL_FUZZ_CHECK(f >= 0.0f && f <= 1.0f);
-#ifdef BEZEL_FUZZ_HAVE_OVERLAP
-        (void)raster.fill_path(path, transform, rule, bezel::OverlapMode::Accurate,
-                               bezel::MaskView{mask.data(), w, h, w}, options);
-#endif
-#ifdef BEZEL_FUZZ_HAVE_LCD
+        // The exact overlap pass: its coverage is a fraction too.
+        if (raster.fill_path(path, transform, rule, bezel::OverlapMode::Accurate,
+                             bezel::MaskView{mask.data(), w, h, w}, options)) {
+            std::vector<float> exact(mask.size());
+            if (raster.fill_path(path, transform, rule, bezel::OverlapMode::Accurate,
+                                 bezel::FloatMaskView{exact.data(), w, h, w}, options))
+                for (float f : exact) BEZEL_FUZZ_CHECK(f >= 0.0f && f <= 1.0f);
+        }
         std::vector<std::uint8_t> lcd(static_cast<std::size_t>(3 * w) * h);
         for (bezel::LcdOrder order : {bezel::LcdOrder::Rgb, bezel::LcdOrder::Bgr})
             for (bezel::OverlapMode overlap :
@@ -110,7 +113,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 (void)raster.fill_path_lcd(path, transform, rule, order,
                                            bezel::MaskView{lcd.data(), 3 * w, h, 3 * w}, overlap,
                                            bezel::kLcdFilterDefault, options);
-#endif
     }
     // Invalid targets are errors, never writes.
     BEZEL_FUZZ_CHECK(!raster.fill_path(path, transform, bezel::FillRule::NonZero,

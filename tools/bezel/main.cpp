@@ -26,8 +26,8 @@ std::string command_path(const CLI::App& app) {
 
 namespace bezel::cli {
 
-// The whole CLI as a function, so that tests/fuzz/fuzz_cli.cpp can run it in-process (built
-// with BEZEL_CLI_NO_MAIN, which leaves main() out).
+// The whole CLI as a function, so that tests/fuzz/fuzz_cli.cpp can run it in-process (main()
+// is alone in entry.cpp).
 int run_cli(int argc, char** argv) {
     CLI::App app{
         "bezel: a font and vector-outline engine.\n"
@@ -72,7 +72,3 @@ int run_cli(int argc, char** argv) {
 }
 
 }  // namespace bezel::cli
-
-#ifndef BEZEL_CLI_NO_MAIN
-int main(int argc, char** argv) { return bezel::cli::run_cli(argc, argv); }
-#endif
