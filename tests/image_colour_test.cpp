@@ -110,6 +110,41 @@ TEST(BlendMask, ClipsAtEveryEdge) {
     EXPECT_EQ(image, Image(3, 3, kWhite));
 }
 
+TEST(BlendMaskGray, EqualsTheRgbaBlendOfTheSameGraysPixelForPixel) {
+    // Random masks, overlapping and partly outside, onto a page that is background only where
+    // nothing has been drawn yet: the background lookup and the general blend both run.
+    std::uint32_t seed = 12345;
+    auto next = [&seed] { return (seed = seed * 1664525u + 1013904223u) >> 24; };
+    for (std::uint8_t fg : {0, 90, 255})
+        for (std::uint8_t bg : {255, 200, 0}) {
+            Image rgba(23, 17, Rgba8{bg, bg, bg, 255});
+            Mask gray(23, 17);
+            for (int y = 0; y < 17; ++y)
+                for (int x = 0; x < 23; ++x) gray.at(x, y) = bg;
+            for (int k = 0; k < 12; ++k) {
+                Mask m(9, 7);
+                for (int y = 0; y < 7; ++y)
+                    for (int x = 0; x < 9; ++x) {
+                        const std::uint32_t r = next();
+                        m.at(x, y) = r < 60 ? 0 : r > 200 ? 255 : static_cast<std::uint8_t>(r);
+                    }
+                const int x = static_cast<int>(next() % 27) - 4, y = static_cast<int>(next() % 21) - 4;
+                blend_mask(rgba, m.view(), x, y, Rgba8{fg, fg, fg, 255});
+                blend_mask_gray(gray.view(), m.view(), x, y, fg);
+            }
+            int changed = 0;
+            for (int y = 0; y < 17; ++y)
+                for (int x = 0; x < 23; ++x) {
+                    ASSERT_EQ(gray.at(x, y), rgba.at(x, y).r)
+                        << +fg << " on " << +bg << " at " << x << "," << y;
+                    changed += gray.at(x, y) != bg;
+                }
+            if (fg != bg) {
+                EXPECT_GT(changed, 100);
+            }
+        }
+}
+
 TEST(BlendLcdMask, EachChannelTakesItsSubpixel) {
     const std::uint8_t m[3] = {255, 0, 0};  // only the first subpixel covered
     Image rgb(1, 1, kWhite), bgr(1, 1, kWhite);

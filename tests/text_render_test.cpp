@@ -162,6 +162,37 @@ TEST(TextRenderer, SeparateRenderersOnFourThreadsAgree) {
     EXPECT_GT(images[0].width(), 0);
 }
 
+TEST(TextRenderer, GrayPageIsTheRgbaPagesChannelByteForByte) {
+    auto r = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(r) << r.error().message;
+    const std::string text = "Wafer office, AVA.\nJumpy quartz vex.";
+    for (auto [fg, bg] : {std::pair<std::uint8_t, std::uint8_t>{0, 255}, {255, 0}, {60, 210}}) {
+        TextRenderOptions o = line_options(17.5);
+        o.foreground = {fg, fg, fg, 255};
+        o.background = {bg, bg, bg, 255};
+        auto rgba = r->render(text, o);
+        auto gray = r->render_gray(text, o);
+        ASSERT_TRUE(rgba && gray);
+        EXPECT_EQ(*gray, luma_of(*rgba)) << +fg << " on " << +bg;
+        int ink = 0;
+        for (std::uint8_t v : gray->pixels()) ink += v != bg;
+        EXPECT_GT(ink, 500);
+    }
+    TextRenderOptions o = line_options(12);
+    o.foreground = {255, 0, 0, 255};
+    auto red = r->render_gray(text, o);
+    ASSERT_FALSE(red);
+    EXPECT_NE(red.error().message.find("gray"), std::string::npos);
+    o = line_options(12);
+    o.background = {255, 255, 255, 128};
+    EXPECT_FALSE(r->render_gray(text, o));
+    o = line_options(12);
+    o.mode = RenderMode::LcdRgb;
+    auto lcd = r->render_gray(text, o);
+    ASSERT_FALSE(lcd);
+    EXPECT_NE(lcd.error().message.find("RenderMode::Gray"), std::string::npos);
+}
+
 TEST(TextRenderer, ErrorsNameTheInput) {
     auto missing = TextRenderer::open("/nonexistent/font.ttf");
     ASSERT_FALSE(missing);

@@ -47,9 +47,10 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
     if (!mkdtemp(tmpl.data())) std::abort();
     g_scratch = tmpl;
     g_home = fs::current_path();
-    static NullBuffer null;
-    std::cout.rdbuf(&null);
-    std::cerr.rdbuf(&null);
+    // Never destroyed: the streams flush their buffer at exit, after function statics are gone.
+    static NullBuffer* const null = new NullBuffer;
+    std::cout.rdbuf(null);
+    std::cerr.rdbuf(null);
     std::atexit([] {
         std::error_code ec;
         fs::remove_all(g_scratch, ec);

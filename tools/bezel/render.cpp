@@ -202,16 +202,25 @@ int run_render(RenderArgs& args) {
 
     auto renderer = TextRenderer::open(args.font.file, args.font.face_index);
     if (!renderer) return fail_runtime(renderer.error().message);
-    auto page = args.stroke_px > 0 ? render_outlined(*renderer, text, options, args.stroke_px)
-                                   : renderer->render(text, options);
-    if (!page) return fail_runtime(page.error().message);
-
     const bool gray = options.mode == RenderMode::Gray && fg->r == fg->g && fg->g == fg->b &&
                       bg->r == bg->g && bg->g == bg->b;
     const bool alpha = fg->a != 255 || bg->a != 255;
-    auto bytes = encode_page(*page, *format, gray && !alpha, alpha, columns);
-    if (!bytes) return fail_runtime((args.output_file.empty() ? "<stdout>" : args.output_file) +
-                                    ": " + bytes.error().message);
+    const std::string destination = args.output_file.empty() ? "<stdout>" : args.output_file;
+    Expected<std::string> bytes = std::string();
+    if (gray && !alpha && args.stroke_px == 0 &&
+        (*format == PageFormat::Png || *format == PageFormat::Pgm)) {
+        // Gray text to a gray file: the page is one byte per pixel from the start (the same
+        // bytes the RGBA page would give after conversion, a quarter of the memory).
+        auto page = renderer->render_gray(text, options);
+        if (!page) return fail_runtime(page.error().message);
+        bytes = encode_gray_page(page->view(), *format);
+    } else {
+        auto page = args.stroke_px > 0 ? render_outlined(*renderer, text, options, args.stroke_px)
+                                       : renderer->render(text, options);
+        if (!page) return fail_runtime(page.error().message);
+        bytes = encode_page(*page, *format, gray && !alpha, alpha, columns);
+    }
+    if (!bytes) return fail_runtime(destination + ": " + bytes.error().message);
     auto written = write_output(args.output_file, *bytes);
     if (!written) return fail_runtime(written.error().message);
     return kExitOk;

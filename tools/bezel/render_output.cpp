@@ -59,4 +59,15 @@ Expected<std::string> encode_page(const Image& page, PageFormat format, bool gra
     return bytes_of(*png);
 }
 
+Expected<std::string> encode_gray_page(ConstMaskView page, PageFormat format) {
+    if (format == PageFormat::Pgm) {
+        const std::vector<std::uint8_t> pgm = encode_pgm(page);
+        return std::string(pgm.begin(), pgm.end());
+    }
+    if (format != PageFormat::Png) return Error{"a gray page is written as PNG or PGM only"};
+    auto png = encode_png_gray(page);
+    if (!png) return png.error();
+    return std::string(png->begin(), png->end());
+}
+
 }  // namespace bezel::cli

@@ -24,5 +24,7 @@ int terminal_columns();
 // RGB otherwise. ANSI is box-filtered to `ansi_columns` (0 = no limit).
 Expected<std::string> encode_page(const Image& page, PageFormat format, bool gray_ok,
                                   bool has_alpha, int ansi_columns);
+// A gray page (one sRGB byte per pixel) as PNG (8-bit gray) or PGM; other formats are an Error.
+Expected<std::string> encode_gray_page(ConstMaskView page, PageFormat format);
 
 }  // namespace bezel::cli

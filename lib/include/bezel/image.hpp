@@ -157,6 +157,11 @@ void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color);
 // Rasterizer::fill_path_lcd are always R, G, B in memory (for either panel order): pass false.
 void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, bool bgr);
 
+// The same for a gray page (one sRGB-encoded byte per pixel, opaque) and an opaque gray colour:
+// out = enc(lerp(dec(dst), dec(gray), coverage)). Equal, pixel for pixel, to blend_mask on an
+// RGBA page of the same grays (where r = g = b = that byte), at a quarter of the memory.
+void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8_t gray);
+
 // PNG colour layouts for writing.
 enum class PngColor : std::uint8_t { Gray, Rgb, Rgba };
 // Writes `image` as PNG in `color` (Gray: luma of the sRGB values, Rec. 709 weights; alpha

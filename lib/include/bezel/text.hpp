@@ -270,9 +270,17 @@ public:
     // filled, glyphs blended in linear light as image.hpp's blend functions). Errors as
     // layout_text, plus an image larger than kMaxImageDim.
     Expected<Image> render(std::string_view utf8, const TextRenderOptions& options);
+    // The same page as one sRGB gray byte per pixel, for gray-on-gray text (what PNG and PGM
+    // output of such text stores): equal to render()'s red (= green = blue) channel, pixel for
+    // pixel, with a quarter of the memory to fill and blend. Errors as render(), plus a
+    // foreground or background that is not opaque gray, or a mode other than RenderMode::Gray.
+    Expected<Mask> render_gray(std::string_view utf8, const TextRenderOptions& options);
 
 private:
     struct Impl;
+    template <typename Page, typename MakePage, typename Blend>
+    Expected<Page> draw(std::string_view utf8, const TextRenderOptions& options,
+                        MakePage&& make_page, Blend&& blend);
     explicit TextRenderer(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
 };

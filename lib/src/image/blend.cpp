@@ -48,12 +48,12 @@ struct Clip {
     int x0, y0, x1, y1;  // mask pixel range [x0, x1) × [y0, y1)
     bool empty() const { return x0 >= x1 || y0 >= y1; }
 };
-Clip clip(const Image& image, int w, int h, int x, int y) {
+Clip clip(int page_w, int page_h, int w, int h, int x, int y) {
     // 64-bit sums: a mask placed near INT_MAX must not overflow.
     long long x0 = std::max(0LL, -static_cast<long long>(x));
     long long y0 = std::max(0LL, -static_cast<long long>(y));
-    long long x1 = std::min<long long>(w, static_cast<long long>(image.width()) - x);
-    long long y1 = std::min<long long>(h, static_cast<long long>(image.height()) - y);
+    long long x1 = std::min<long long>(w, static_cast<long long>(page_w) - x);
+    long long y1 = std::min<long long>(h, static_cast<long long>(page_h) - y);
     return {static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(std::max(x0, x1)),
             static_cast<int>(std::max(y0, y1))};
 }
@@ -95,7 +95,7 @@ const CoverageLut& coverage_lut(Rgba8 dst, Rgba8 color, const SrgbTables& t, con
 }  // namespace
 
 void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color) {
-    Clip c = clip(image, mask.width, mask.height, x, y);
+    Clip c = clip(image.width(), image.height(), mask.width, mask.height, x, y);
     if (c.empty() || color.a == 0) return;
     const SrgbTables& t = srgb_tables();
     const float src[3] = {t.decode[color.r], t.decode[color.g], t.decode[color.b]};
@@ -124,8 +124,48 @@ void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color) {
     }
 }
 
+void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8_t gray) {
+    if (page.data == nullptr || mask.data == nullptr) return;
+    Clip c = clip(page.width, page.height, mask.width, mask.height, x, y);
+    if (c.empty()) return;
+    const SrgbTables& t = srgb_tables();
+    const float src = t.decode[gray];
+    // As blend_mask's CoverageLut, for one byte: the background under the mask's first visible
+    // pixel, blended at each coverage (the same float steps as blend_pixel's opaque case, so
+    // the two functions agree exactly).
+    thread_local std::uint8_t lut_dst = 0, lut_gray = 0;
+    thread_local bool lut_valid = false;
+    thread_local std::array<std::uint8_t, 256> lut;
+    const std::uint8_t under = page.row(y + c.y0)[x + c.x0];
+    if (!lut_valid || lut_dst != under || lut_gray != gray) {
+        const float dl = t.decode[under];
+        lut[0] = under;
+        for (int cov = 1; cov < 255; ++cov) lut[cov] = t.enc(dl + (src - dl) * (cov / 255.0f));
+        lut[255] = gray;
+        lut_dst = under;
+        lut_gray = gray;
+        lut_valid = true;
+    }
+    for (int my = c.y0; my < c.y1; ++my) {
+        const std::uint8_t* m = mask.row(my);
+        std::uint8_t* d = page.row(y + my) + (x + c.x0);
+        for (int mx = c.x0; mx < c.x1; ++mx, ++d) {
+            const std::uint8_t cov = m[mx];
+            if (cov == 0) continue;
+            if (*d == lut_dst) {
+                *d = lut[cov];
+            } else if (cov == 255) {
+                *d = gray;
+            } else {
+                const float dl = t.decode[*d];
+                *d = t.enc(dl + (src - dl) * (cov / 255.0f));
+            }
+        }
+    }
+}
+
 void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, bool bgr) {
-    Clip c = clip(image, mask.width / 3, mask.height, x, y);
+    Clip c = clip(image.width(), image.height(), mask.width / 3, mask.height, x, y);
     if (c.empty() || color.a == 0) return;
     const SrgbTables& t = srgb_tables();
     const float src[3] = {t.decode[color.r], t.decode[color.g], t.decode[color.b]};

@@ -7,6 +7,8 @@
 // tangent or overlap handling — which is what makes it a trustworthy reference for crossings.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
 
 #include "intersect/curve_ops.hpp"
 
@@ -40,7 +42,7 @@ struct Baseline {
         const double tol = flatness;
         if (ba.x0 > bb.x1 + tol || bb.x0 > ba.x1 + tol || ba.y0 > bb.y1 + tol || bb.y0 > ba.y1 + tol)
             return;
-        if (++work > 64 * kMaxIntersectWork) return;
+        if (++work > 4 * kMaxIntersectWork) return;
         bool flat_a = chord_deviation(a.c) <= flatness, flat_b = chord_deviation(b.c) <= flatness;
         if ((flat_a && flat_b) || depth >= 60) {
             // Chord against chord: P + s·r = Q + t·u.
@@ -82,18 +84,36 @@ Expected<std::vector<CurveIntersection>> intersect_baseline(const Curve& a, cons
     isect::Frame f = isect::make_frame(a, b);
     Baseline bl{flatness, {}, 0};
     bl.run({f.to_frame(a), 0.0, 1.0}, {f.to_frame(b), 0.0, 1.0}, 0);
-    if (bl.work > 64 * kMaxIntersectWork)
+    if (bl.work > 4 * kMaxIntersectWork)
         return Error{"intersect_baseline: work limit exceeded (coincident curves?)"};
-    // Neighbouring chord pairs report a crossing on their shared end twice: merge.
+    // Neighbouring chord pairs report a crossing on their shared end twice: merge hits closer
+    // than kMergeParam in both parameters. Hits are bucketed on a kMergeParam grid, so a twin is
+    // in one of the 3×3 buckets around a hit: linear, where comparing every pair was quadratic
+    // (a fuzzer's 1e30-wide quadratic gives 65 536 hits at one t_a, which took a minute).
+    constexpr double kMergeParam = 1e-7;
     std::sort(bl.found.begin(), bl.found.end(),
               [](const CurveIntersection& l, const CurveIntersection& r) { return l.t_a < r.t_a; });
+    auto cell = [](double t) { return static_cast<std::int64_t>(std::floor(t / kMergeParam)); };
+    auto key = [](std::int64_t ca, std::int64_t cb) {
+        return static_cast<std::uint64_t>(ca) << 32 ^ static_cast<std::uint64_t>(cb);
+    };
+    std::unordered_multimap<std::uint64_t, std::size_t> buckets;
     std::vector<CurveIntersection> out;
     for (CurveIntersection ci : bl.found) {
+        const std::int64_t ca = cell(ci.t_a), cb = cell(ci.t_b);
         bool dup = false;
-        for (const CurveIntersection& o : out)
-            dup |= std::fabs(o.t_a - ci.t_a) <= 1e-7 && std::fabs(o.t_b - ci.t_b) <= 1e-7;
+        for (std::int64_t da = -1; da <= 1 && !dup; ++da)
+            for (std::int64_t db = -1; db <= 1 && !dup; ++db) {
+                auto [lo, hi] = buckets.equal_range(key(ca + da, cb + db));
+                for (auto it = lo; it != hi && !dup; ++it) {
+                    const CurveIntersection& o = out[it->second];
+                    dup = std::fabs(o.t_a - ci.t_a) <= kMergeParam &&
+                          std::fabs(o.t_b - ci.t_b) <= kMergeParam;
+                }
+            }
         if (dup) continue;
         ci.point = a.eval(ci.t_a);
+        buckets.emplace(key(ca, cb), out.size());
         out.push_back(ci);
     }
     return out;

@@ -73,7 +73,12 @@ Font& TextRenderer::font() { return impl_->font; }
 Shaper& TextRenderer::shaper() { return impl_->shaper; }
 GlyphCache& TextRenderer::cache() { return impl_->cache; }
 
-Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOptions& options) {
+// Shapes and lays out `utf8`, makes the page with make_page(width, height), then hands each
+// placed glyph's cached mask and its top-left pixel to blend(page, mask, x, y). One loop for the
+// RGBA and the gray page.
+template <typename Page, typename MakePage, typename Blend>
+Expected<Page> TextRenderer::draw(std::string_view utf8, const TextRenderOptions& options,
+                                  MakePage&& make_page, Blend&& blend) {
     Impl& r = *impl_;
     if (!same_variations(options.shape.variations, r.variations)) {
         if (auto set = r.font.set_variations(options.shape.variations); !set) {
@@ -93,8 +98,7 @@ Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOpti
                      " px is too large (at most " + std::to_string(kMaxImageDim) + " px a side, " +
                      std::to_string(static_cast<long>(kMaxPagePixels)) + " px in all)"};
     // A page is at least one pixel: empty text still gives a (background) image.
-    Image page(std::max(1, static_cast<int>(w)), std::max(1, static_cast<int>(h)),
-               options.background);
+    Page page = make_page(std::max(1, static_cast<int>(w)), std::max(1, static_cast<int>(h)));
 
     GlyphRenderOptions glyph;
     glyph.size_px = options.shape.size_px;
@@ -111,16 +115,42 @@ Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOpti
         if (!cached) return cached.error();
         const CachedGlyph& c = **cached;
         if (c.box.width == 0) continue;
-        const int x = static_cast<int>(column) + c.box.left;
-        const int y = static_cast<int>(row) - c.box.top;
-        if (options.mode == RenderMode::Gray)
-            blend_mask(page, c.mask, x, y, options.foreground);
-        else
-            // fill_path_lcd already stores R, G, B coverage per pixel whatever the panel's
-            // order (a BGR panel's samples are reversed there), so the bytes are RGB here.
-            blend_lcd_mask(page, c.mask, x, y, options.foreground, /*bgr=*/false);
+        blend(page, c.mask, static_cast<int>(column) + c.box.left,
+              static_cast<int>(row) - c.box.top);
     }
     return page;
+}
+
+Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOptions& options) {
+    return draw<Image>(
+        utf8, options, [&](int w, int h) { return Image(w, h, options.background); },
+        [&](Image& page, ConstMaskView mask, int x, int y) {
+            if (options.mode == RenderMode::Gray)
+                blend_mask(page, mask, x, y, options.foreground);
+            else
+                // fill_path_lcd already stores R, G, B coverage per pixel whatever the panel's
+                // order (a BGR panel's samples are reversed there), so the bytes are RGB here.
+                blend_lcd_mask(page, mask, x, y, options.foreground, /*bgr=*/false);
+        });
+}
+
+Expected<Mask> TextRenderer::render_gray(std::string_view utf8, const TextRenderOptions& options) {
+    const Rgba8 fg = options.foreground, bg = options.background;
+    if (options.mode != RenderMode::Gray)
+        return Error{"render_gray: needs RenderMode::Gray (LCD coverage is per channel)"};
+    if (!(fg.r == fg.g && fg.g == fg.b && bg.r == bg.g && bg.g == bg.b && fg.a == 255 &&
+          bg.a == 255))
+        return Error{"render_gray: needs opaque gray foreground and background colours"};
+    return draw<Mask>(
+        utf8, options,
+        [&](int w, int h) {
+            Mask page(w, h);
+            if (bg.r != 0) std::memset(page.view().data, bg.r, page.pixels().size());
+            return page;
+        },
+        [&](Mask& page, ConstMaskView mask, int x, int y) {
+            blend_mask_gray(page.view(), mask, x, y, fg.r);
+        });
 }
 
 }  // namespace bezel
