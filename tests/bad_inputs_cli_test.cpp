@@ -93,6 +93,7 @@ std::vector<BadInput> catalogue() {
         {"path data overflowing a double", {"intersect", "M0 0L1e999 0", "M0 1L1 0"}, 2, "offset"},
         {"unknown option", {"outline", kDejaVu, "--char", "g", "--bogus"}, 2, "--bogus"},
         {"unknown command", {"outlines", kDejaVu}, 2, "outlines"},
+        {"stray empty argument (hung CLI11 2.1 before)", {"smooth", "--method", "natural", "--points", "0,0 1,1 2,0", "", "-o", "out.svg"}, 2, "unexpected argument ''"},
         {"unknown output format", {"outline", kDejaVu, "--char", "g", "-o", "out.xyz"}, 2, "out.xyz"},
         {"output into a missing directory", {"outline", kDejaVu, "--char", "g", "-o", "no-such-dir/out.svg"}, 1, "no-such-dir/out.svg"},
         // (Permissions do not stop root, which CI may be: /proc refuses new files to everyone.)

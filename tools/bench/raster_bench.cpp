@@ -3,6 +3,7 @@
 //
 //   bench_raster [--font F]... [--sizes 12,16,...] [--glyphs ascii|all] [--reps N] [--json]
 //                [--accuracy] [--breakdown] [--tolerance PX] [--only freetype|bezel|stb|agg]
+//                [--inner N]   (N passes per rep instead of ≥ 20 ms: for callgrind counts)
 //
 // What is timed, per glyph, with the outline already loaded and converted outside the loop:
 //   freetype  memset of the target + FT_Outline_Render(FT_RASTER_FLAG_AA) into it (the smooth
@@ -79,6 +80,7 @@ struct Options {
     std::vector<int> sizes{12, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512};
     bool all_glyphs = false;
     int reps = 5;
+    int inner = 0;  // 0: adaptive (see time_ns_per_glyph); N: exactly N passes per rep
     bool json = false;
     bool accuracy = false;
     bool breakdown = false;  // also time bezel's flatten and fill apart
@@ -209,11 +211,15 @@ struct Target {
     }
 };
 
+int g_inner = 0;  // --inner
+
 template <typename F>
 double time_ns_per_glyph(const std::vector<Glyph>& glyphs, int reps, F&& render) {
-    // Repeat the glyph set until one run lasts ≥ 20 ms, so the clock's resolution is irrelevant.
-    int inner = 1;
-    for (;;) {
+    // Repeat the glyph set until one run lasts ≥ 20 ms, so the clock's resolution is irrelevant
+    // — unless --inner fixed the count: instruction counts (valgrind --tool=callgrind) need the
+    // same work in every run, whatever the machine's load.
+    int inner = g_inner > 0 ? g_inner : 1;
+    for (; g_inner == 0;) {
         double t0 = thread_ns();
         for (int i = 0; i < inner; ++i)
             for (const Glyph& g : glyphs) render(g);
@@ -294,6 +300,7 @@ int main(int argc, char** argv) {
         else if (a == "--sizes") opt.sizes = parse_sizes(next());
         else if (a == "--glyphs") opt.all_glyphs = next() == "all";
         else if (a == "--reps") opt.reps = std::max(1, std::atoi(next().c_str()));
+        else if (a == "--inner") opt.inner = std::max(1, std::atoi(next().c_str()));
         else if (a == "--json") opt.json = true;
         else if (a == "--accuracy") opt.accuracy = true;
         else if (a == "--breakdown") opt.breakdown = true;
@@ -306,6 +313,7 @@ int main(int argc, char** argv) {
                      std::string(BEZEL_FONTS_DIR) + "/cantarell/Cantarell-Regular.otf"};
     }
     if (opt.sizes.empty()) { std::fprintf(stderr, "bench_raster: no valid --sizes\n"); return 2; }
+    g_inner = opt.inner;
 
     FT_Library lib;
     if (FT_Init_FreeType(&lib)) { std::fprintf(stderr, "bench_raster: FreeType init failed\n"); return 1; }

@@ -40,6 +40,23 @@ int run_cli(int argc, char** argv) {
         "output), 2 usage error.\nRun 'bezel <command> --help' for a command's options.");
     std::vector<Command> commands = add_all_commands(app);
 
+    // Every command gets a last, hidden positional that takes whatever arguments are left over,
+    // reported below as a usage error. Besides naming the stray argument, it keeps an EMPTY
+    // argument away from CLI11 2.1's subcommand lookup, where "" matches an option group (an
+    // unnamed subcommand) and parsing loops forever (a fuzz_cli finding: `bezel smooth "" --x`).
+    // (Not where an option group holds a positional, as `bezel stroke PATH` does: the parent's
+    // positionals are filled first and would take it; that positional takes "" itself.)
+    std::vector<std::vector<std::string>> strays(commands.size());
+    const auto group_positional = [](CLI::App* cmd) {
+        for (CLI::App* group : cmd->get_subcommands([](CLI::App* a) { return a->get_name().empty(); }))
+            for (const CLI::Option* o : group->get_options())
+                if (o->get_positional()) return true;
+        return false;
+    };
+    for (std::size_t i = 0; i < commands.size(); ++i)
+        if (!group_positional(commands[i].app))
+            commands[i].app->add_option("bezel-stray-arguments", strays[i])->group("");
+
     // CLI11 would report a mistyped command only as "A subcommand is required"; name it instead.
     if (argc > 1 && argv[1][0] != '-') {
         std::string names;
@@ -65,8 +82,13 @@ int run_cli(int argc, char** argv) {
         return fail_usage(e.what(), command_path(app));
     }
 
-    for (const Command& command : commands)
-        if (command.app->parsed()) return command.run();
+    for (std::size_t i = 0; i < commands.size(); ++i) {
+        if (!commands[i].app->parsed()) continue;
+        if (!strays[i].empty())
+            return fail_usage("unexpected argument '" + strays[i].front() + "'",
+                              "bezel " + commands[i].app->get_name());
+        return commands[i].run();
+    }
     // require_subcommand(1) makes this unreachable; stay defined anyway.
     return fail_usage("no command given", "bezel");
 }
