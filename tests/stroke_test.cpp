@@ -332,11 +332,11 @@ TEST(Stroke, BadInputsAreErrors) {
     auto r = stroke(long_line, s);
     ASSERT_FALSE(r.ok());
     EXPECT_NE(r.error().message.find("kMaxDashes"), std::string::npos);
-    // 149 995 dashes are within kMaxDashes, and dash() makes them. Stroked with round caps
+    // 39 995 dashes are within kMaxDashes, and dash() makes them. Stroked with round caps
     // (eight verbs each at least: Move, two sides, two arcs per cap, Close) they would pass
     // kMaxStrokeSegments, which stroke() says before making any ("dashes of at least").
     s = {}; s.dashes = {1, 1}; s.cap = LineCap::Round;
-    Path line = svg("M0 0 L299990 0");
+    Path line = svg("M0 0 L79990 0");
     auto round = stroke(line, s);
     ASSERT_FALSE(round.ok());
     EXPECT_NE(round.error().message.find("dashes of at least 8 verbs"), std::string::npos)
@@ -345,12 +345,12 @@ TEST(Stroke, BadInputsAreErrors) {
     auto pieces = dash(line, s.dashes, 0);
     ASSERT_TRUE(pieces.ok()) << pieces.error().message;
     // A Move and a Line per dash; the last one is empty, where the line ends.
-    EXPECT_EQ(pieces->verbs().size(), 2u * 149996);
-    // The bound is a lower one: 99 995 butt-capped dashes (six verbs each) are stroked.
+    EXPECT_EQ(pieces->verbs().size(), 2u * 39996);
+    // The bound is a lower one: 24 995 butt-capped dashes (six verbs each) are stroked.
     s.cap = LineCap::Butt;
-    auto butt = stroke(svg("M0 0 L199990 0"), s);
+    auto butt = stroke(svg("M0 0 L49990 0"), s);
     ASSERT_TRUE(butt.ok()) << butt.error().message;
-    EXPECT_EQ(butt->verbs().size(), 6u * 99995);
+    EXPECT_EQ(butt->verbs().size(), 6u * 24995);
     EXPECT_LE(butt->verbs().size(), kMaxStrokeSegments);
 
     Path bad;

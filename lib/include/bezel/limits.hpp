@@ -41,8 +41,8 @@
 //  kMaxSmoothCoordinate        2^100           smooth     keeps phantom points, spans and products finite
 //  kMaxChaikinIterations       24              smooth     each round doubles the points
 //  kMaxChaikinOutputPoints     2^22            smooth     checked before any work (64 MiB)
-//  kMaxStrokeSegments          2^20            stroke     output segments of one stroke
-//  kMaxDashes                  2^18            stroke     dash intervals one stroke may emit
+//  kMaxStrokeSegments          2^18            stroke     output segments of one stroke
+//  kMaxDashes                  2^16            stroke     dash intervals one stroke may emit
 //  kMaxSurfacePatches          16384           surface    patches per surface
 //  kMaxBSplineGridSide         256             surface    control points per side of a B-spline grid
 //  kMaxTessellationSteps       512             surface    steps per patch side
@@ -85,8 +85,8 @@ static_assert(kMaxSmoothPoints == std::size_t{1} << 20);
 static_assert(kMaxSmoothCoordinate == 0x1p100);
 static_assert(kMaxChaikinIterations == 24);
 static_assert(kMaxChaikinOutputPoints == std::size_t{1} << 22);
-static_assert(kMaxStrokeSegments == std::size_t{1} << 20);
-static_assert(kMaxDashes == std::size_t{1} << 18);
+static_assert(kMaxStrokeSegments == std::size_t{1} << 18);
+static_assert(kMaxDashes == std::size_t{1} << 16);
 static_assert(kMaxSurfacePatches == 16384);
 static_assert(kMaxBSplineGridSide == 256);
 static_assert(kMaxTessellationSteps == 512);
