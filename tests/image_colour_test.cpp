@@ -207,6 +207,48 @@ TEST(EncodePng, MaskRoundTripsExactly) {
     std::remove(file.c_str());
 }
 
+TEST(EncodePng, GrayOnSeveralThreadsDecodesToTheSamePixels) {
+    // A text-like page (long white runs, dark strokes, some noise) in a strided buffer, encoded
+    // on 1–8 threads (and more than kMaxPngThreads) and decoded by libpng.
+    const int W = 157, H = 701, stride = 160;
+    std::vector<std::uint8_t> buf(static_cast<std::size_t>(stride) * H, 7);
+    std::uint32_t seed = 99;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            seed = seed * 1664525u + 1013904223u;
+            buf[y * stride + x] = (y / 9 + x / 5) % 7 == 0 ? static_cast<std::uint8_t>(seed >> 24)
+                                                            : (x * y) % 13 == 0 ? 0 : 255;
+        }
+    const ConstMaskView view(buf.data(), W, H, stride);
+    auto single = encode_png_gray(view);
+    ASSERT_TRUE(single);
+    for (int threads : {1, 2, 3, 8, 64}) {
+        auto png = encode_png_gray(view, threads);
+        ASSERT_TRUE(png) << png.error().message;
+        if (threads > 1) {
+            EXPECT_NE(*png, *single) << threads;  // the banded writer ran
+        }
+        const std::string file = temp_file("threads.png");
+        std::FILE* f = std::fopen(file.c_str(), "wb");
+        ASSERT_NE(f, nullptr);
+        std::fwrite(png->data(), 1, png->size(), f);
+        std::fclose(f);
+        auto back = read_png_gray(file);
+        std::remove(file.c_str());
+        ASSERT_TRUE(back) << threads << ": " << back.error().message;
+        ASSERT_EQ(back->width(), W);
+        ASSERT_EQ(back->height(), H);
+        int wrong = 0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) wrong += back->at(x, y) != buf[y * stride + x];
+        EXPECT_EQ(wrong, 0) << threads << " threads";
+    }
+    // Too few rows to split, and bad masks: the one-thread writer's result and errors.
+    const ConstMaskView short_view(buf.data(), W, 100, stride);
+    EXPECT_EQ(*encode_png_gray(short_view, 4), *encode_png_gray(short_view));
+    EXPECT_FALSE(encode_png_gray(ConstMaskView(buf.data(), 0, H, stride), 4));
+}
+
 TEST(EncodePng, HeaderNamesTheColourType) {
     Image image = test_pattern(7, 3);
     const std::pair<PngColor, int> cases[] = {

@@ -171,6 +171,15 @@ Status write_png(const std::string& file, const Image& image, PngColor color = P
 // PNG bytes in memory (for stdout and atomic writes).
 Expected<std::vector<std::uint8_t>> encode_png(const Image& image, PngColor color);
 Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask);
+// The same image, deflated on up to `threads` threads (at most kMaxPngThreads; 1 or fewer, or a
+// mask under 2·kPngRowsPerThread rows, is the call above): the rows are cut into bands, each
+// band deflated on its own thread and ended on a byte boundary (a sync flush), and the pieces
+// joined into one zlib stream, as pigz does. A valid PNG that decodes to the same pixels; its
+// bytes depend on `threads`, and it is a little larger than the one-thread file (each band
+// starts with an empty history). Errors as encode_png_gray.
+inline constexpr int kMaxPngThreads = 8;
+inline constexpr int kPngRowsPerThread = 64;
+Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask, int threads);
 // Netpbm: binary PGM (P5, luma) or PPM (P6, RGB), alpha dropped.
 std::vector<std::uint8_t> encode_pgm(const Image& image);
 std::vector<std::uint8_t> encode_ppm(const Image& image);
