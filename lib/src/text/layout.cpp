@@ -338,6 +338,13 @@ Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
     out.width = avail + 2 * margin;
     out.height = 2 * margin + ascender - descender +
                  static_cast<double>(out.lines.size() - 1) * line_advance;
+    // Each option is finite, but their products need not be: a line_height of 1e300 puts the
+    // second line at infinity (a fuzz_text finding). The block's size bounds every position.
+    if (!std::isfinite(out.width) || !std::isfinite(out.height))
+        return Error{"layout: the text block would be infinitely large (line_height " +
+                     std::to_string(layout.line_height) + ", margin_px " +
+                     std::to_string(layout.margin_px) + ", width_px " +
+                     std::to_string(layout.width_px) + ")"};
     return out;
 }
 
