@@ -249,6 +249,52 @@ TEST(EncodePng, GrayOnSeveralThreadsDecodesToTheSamePixels) {
     EXPECT_FALSE(encode_png_gray(ConstMaskView(buf.data(), 0, H, stride), 4));
 }
 
+TEST(EncodePng, StreamOnWorkerThreadsFedWhileThePageIsDrawnEqualsTheBandedFile) {
+    // The page is "drawn" band by band while workers deflate what was declared final; rows
+    // below the final line are still being written (overwritten from junk), as text drawing
+    // does. The bytes equal the banded writer's for the finished page (any thread count).
+    const int W = 301, H = 777;
+    Mask finished(W, H);
+    std::uint32_t seed = 5;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            seed = seed * 1664525u + 1013904223u;
+            finished.at(x, y) = (x / 7 + y / 3) % 5 == 0 ? static_cast<std::uint8_t>(seed >> 24)
+                                                         : 255;
+        }
+    auto banded = encode_png_gray(finished.view(), 3);
+    ASSERT_TRUE(banded) << banded.error().message;
+    EXPECT_EQ(*encode_png_gray(finished.view(), 2), *banded);
+    for (int workers : {0, 1, 3}) {
+        Mask page(W, H);
+        std::fill(page.view().data, page.view().data + W * H, std::uint8_t{77});  // junk
+        PngGrayStream stream(page.view(), workers);
+        for (int y = 0; y < H; ++y) {
+            std::copy(finished.view().row(y), finished.view().row(y) + W, page.view().row(y));
+            if (y % 13 == 12) stream.rows_final(y + 1);
+            if (y % 50 == 49) stream.rows_final(y / 2);  // going back is ignored
+        }
+        auto png = stream.finish();
+        ASSERT_TRUE(png) << png.error().message;
+        EXPECT_EQ(*png, *banded) << workers << " workers";
+        auto again = stream.finish();
+        EXPECT_FALSE(again);
+    }
+    // A stream abandoned half way (the page's drawing failed) stops its workers and frees.
+    {
+        Mask page(W, H);
+        PngGrayStream stream(page.view(), 2);
+        stream.rows_final(H / 2);
+    }
+    // Too few rows to band, and a bad page: the one-thread writer's result and errors.
+    Mask small(W, 2 * kPngBandRows - 1);
+    PngGrayStream small_stream(small.view(), 2);
+    small_stream.rows_final(small.height());
+    EXPECT_EQ(*small_stream.finish(), *encode_png_gray(small.view()));
+    PngGrayStream bad(ConstMaskView(finished.view().data, 0, H, W), 2);
+    EXPECT_FALSE(bad.finish());
+}
+
 TEST(EncodePng, HeaderNamesTheColourType) {
     Image image = test_pattern(7, 3);
     const std::pair<PngColor, int> cases[] = {

@@ -7,7 +7,10 @@
 // moved by a quarter pixel changes its edge pixels by ~64). BEZEL_UPDATE_GOLDEN=1 rewrites them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -191,6 +194,74 @@ TEST(TextRenderer, GrayPageIsTheRgbaPagesChannelByteForByte) {
     auto lcd = r->render_gray(text, o);
     ASSERT_FALSE(lcd);
     EXPECT_NE(lcd.error().message.find("RenderMode::Gray"), std::string::npos);
+}
+
+TEST(TextRenderer, RowsDeclaredFinalAreNeverWrittenAgain) {
+    // Lines whose ink overlaps (a line height below the font's extent: descenders of one line
+    // reach into the next) and a long page: every row the callback calls final must hold its
+    // finished pixels at that moment, the calls must only grow, and the last is the height.
+    auto r = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(r) << r.error().message;
+    std::string text;
+    for (int i = 0; i < 40; ++i) text += "Ågypsy jQ|, AVA (" + std::to_string(i) + ")\n";
+    TextRenderOptions o = line_options(15);
+    o.layout.line_height = 0.8;
+    auto whole = r->render_gray(text, o);
+    ASSERT_TRUE(whole) << whole.error().message;
+    Mask page;
+    std::vector<int> calls;
+    std::vector<std::uint8_t> at_call(whole->pixels().size());  // each row as it was when final
+    auto drawn = r->render_gray(text, o, page, [&](int rows) {
+        const int from = calls.empty() ? 0 : calls.back();
+        calls.push_back(rows);
+        for (int y = std::max(0, from); y < rows; ++y)
+            std::copy(page.view().row(y), page.view().row(y) + page.width(),
+                      at_call.begin() + static_cast<std::ptrdiff_t>(y) * page.width());
+    });
+    ASSERT_TRUE(drawn) << drawn.error().message;
+    EXPECT_EQ(page, *whole);
+    ASSERT_GT(calls.size(), 20u);  // one per line or so: the rows are handed on early
+    EXPECT_TRUE(std::is_sorted(calls.begin(), calls.end()));
+    EXPECT_GT(calls.front(), 0);
+    EXPECT_LT(calls.front(), page.height() / 4);
+    EXPECT_EQ(calls.back(), page.height());
+    EXPECT_EQ(at_call, whole->pixels());
+    // A refused size fails before any row is drawn: no call.
+    calls.clear();
+    o.shape.size_px = -1;
+    EXPECT_FALSE(r->render_gray(text, o, page, [&](int rows) { calls.push_back(rows); }));
+    EXPECT_TRUE(calls.empty());
+}
+
+TEST(TextRenderer, PageDeflatedOnWorkerThreadsWhileDrawnDecodesToThePage) {
+    // bezel render's gray PNG route: workers read the final rows while this thread blends the
+    // rows below them (ThreadSanitizer runs this test).
+    auto r = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(r) << r.error().message;
+    std::string text;
+    for (int i = 0; i < 30; ++i) text += "Wafer office, jumpy quartz vex (" + std::to_string(i) + ")\n";
+    const TextRenderOptions o = line_options(16);
+    Mask page;
+    std::optional<PngGrayStream> png;
+    auto drawn = r->render_gray(text, o, page, [&](int rows) {
+        if (!png) png.emplace(page.view(), 2);
+        png->rows_final(rows);
+    });
+    ASSERT_TRUE(drawn) << drawn.error().message;
+    ASSERT_TRUE(png.has_value());
+    auto bytes = png->finish();
+    ASSERT_TRUE(bytes) << bytes.error().message;
+    EXPECT_EQ(*bytes, *encode_png_gray(page.view(), 2));
+    const std::string file = ::testing::TempDir() + "bezel_text_stream.png";
+    std::FILE* f = std::fopen(file.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    std::fwrite(bytes->data(), 1, bytes->size(), f);
+    std::fclose(f);
+    auto back = read_png_gray(file);
+    std::remove(file.c_str());
+    ASSERT_TRUE(back) << back.error().message;
+    EXPECT_EQ(*back, page);
+    EXPECT_GT(page.height(), 4 * kPngBandRows);  // several bands went to the workers
 }
 
 TEST(TextRenderer, ErrorsNameTheInput) {

@@ -211,16 +211,15 @@ int run_render(RenderArgs& args) {
         (*format == PageFormat::Png || *format == PageFormat::Pgm)) {
         // Gray text to a gray file: the page is one byte per pixel from the start (the same
         // bytes the RGBA page would give after conversion, a quarter of the memory).
-        auto page = renderer->render_gray(text, options);
-        if (!page) return fail_runtime(page.error().message);
-        bytes = encode_gray_page(page->view(), *format);
+        bytes = render_gray_page(*renderer, text, options, *format, destination);
     } else {
         auto page = args.stroke_px > 0 ? render_outlined(*renderer, text, options, args.stroke_px)
                                        : renderer->render(text, options);
         if (!page) return fail_runtime(page.error().message);
         bytes = encode_page(*page, *format, gray && !alpha, alpha, columns);
+        if (!bytes) return fail_runtime(destination + ": " + bytes.error().message);
     }
-    if (!bytes) return fail_runtime(destination + ": " + bytes.error().message);
+    if (!bytes) return fail_runtime(bytes.error().message);
     auto written = write_output(args.output_file, *bytes);
     if (!written) return fail_runtime(written.error().message);
     return kExitOk;

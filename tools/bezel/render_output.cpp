@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <thread>
 
 namespace bezel::cli {
@@ -63,16 +64,29 @@ Expected<std::string> encode_page(const Image& page, PageFormat format, bool gra
     return bytes_of(*png);
 }
 
-Expected<std::string> encode_gray_page(ConstMaskView page, PageFormat format) {
-    if (format == PageFormat::Pgm) return bytes_of(encode_pgm(page));
-    if (format != PageFormat::Png) return Error{"a gray page is written as PNG or PGM only"};
-    // Deflated on every core: zlib is most of `bezel render`'s time on a page of text. Two bands
-    // per core balance better than one (measured on the 716×2361 benchmark page, 2-core VM:
-    // 12.0 ms on one thread, 8.6 ms in two bands, 7.5 ms in four).
-    const int threads = static_cast<int>(2 * std::max(1u, std::thread::hardware_concurrency()));
-    auto png = encode_png_gray(page, threads);
-    if (!png) return png.error();
-    return bytes_of(*png);
+Expected<std::string> render_gray_page(TextRenderer& renderer, std::string_view text,
+                                       const TextRenderOptions& options, PageFormat format,
+                                       const std::string& destination) {
+    if (format != PageFormat::Png && format != PageFormat::Pgm)
+        return Error{"a gray page is written as PNG or PGM only"};
+    Mask page;
+    if (format == PageFormat::Pgm) {
+        if (auto drawn = renderer.render_gray(text, options, page, {}); !drawn) return drawn.error();
+        return bytes_of(encode_pgm(page.view()));
+    }
+    // zlib is most of `bezel render`'s time on a page of text, so the PNG's bands are deflated
+    // by workers on the other cores (at least one) while this thread draws the lines below
+    // them, then by all of them. Declared after `page`: destroyed (its workers joined) first.
+    const int workers = static_cast<int>(std::max(2u, std::thread::hardware_concurrency()) - 1);
+    std::optional<PngGrayStream> png;
+    auto drawn = renderer.render_gray(text, options, page, [&](int rows) {
+        if (!png) png.emplace(page.view(), workers);
+        png->rows_final(rows);
+    });
+    if (!drawn) return drawn.error();
+    auto encoded = png->finish();  // render_gray's last call, with the page height, made `png`
+    if (!encoded) return Error{destination + ": " + encoded.error().message};
+    return bytes_of(*encoded);
 }
 
 }  // namespace bezel::cli

@@ -2,9 +2,11 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "bezel/expected.hpp"
 #include "bezel/image.hpp"
+#include "bezel/text.hpp"
 
 namespace bezel::cli {
 
@@ -24,7 +26,12 @@ int terminal_columns();
 // RGB otherwise. ANSI is box-filtered to `ansi_columns` (0 = no limit).
 Expected<std::string> encode_page(const Image& page, PageFormat format, bool gray_ok,
                                   bool has_alpha, int ansi_columns);
-// A gray page (one sRGB byte per pixel) as PNG (8-bit gray) or PGM; other formats are an Error.
-Expected<std::string> encode_gray_page(ConstMaskView page, PageFormat format);
+// Gray text (TextRenderer::render_gray: opaque gray colours, gray mode) drawn as one sRGB byte
+// per pixel and written as PNG (8-bit gray) or PGM; other formats are an Error. For PNG, bands of
+// rows are deflated on the other cores while the lines below them are still drawn. Drawing
+// errors come back as render_gray gives them; encoding errors are prefixed with `destination`.
+Expected<std::string> render_gray_page(TextRenderer& renderer, std::string_view text,
+                                       const TextRenderOptions& options, PageFormat format,
+                                       const std::string& destination);
 
 }  // namespace bezel::cli

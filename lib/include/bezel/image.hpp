@@ -16,6 +16,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -172,14 +173,42 @@ Status write_png(const std::string& file, const Image& image, PngColor color = P
 Expected<std::vector<std::uint8_t>> encode_png(const Image& image, PngColor color);
 Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask);
 // The same image, deflated on up to `threads` threads (at most kMaxPngThreads; 1 or fewer, or a
-// mask under 2·kPngRowsPerThread rows, is the call above): the rows are cut into bands, each
-// band deflated on its own thread and ended on a byte boundary (a sync flush), and the pieces
-// joined into one zlib stream, as pigz does. A valid PNG that decodes to the same pixels; its
-// bytes depend on `threads`, and it is a little larger than the one-thread file (each band
-// starts with an empty history). Errors as encode_png_gray.
+// mask under 2·kPngBandRows rows, is the call above): the rows are cut into bands of
+// kPngBandRows, each band deflated on its own and ended on a byte boundary (a sync flush), and
+// the pieces joined into one zlib stream, as pigz does. A valid PNG that decodes to the same
+// pixels; its bytes do not depend on `threads` (> 1), and it is a little larger than the
+// one-thread file (each band starts with an empty history). Errors as encode_png_gray.
 inline constexpr int kMaxPngThreads = 8;
-inline constexpr int kPngRowsPerThread = 64;
+inline constexpr int kPngBandRows = 64;
 Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask, int threads);
+
+// The banded gray PNG writer above, fed while the page is still being drawn: bands are deflated
+// on `workers` threads (0..kMaxPngThreads; a thread the system refuses is one fewer) as soon as
+// the caller declares their rows final, so compressing overlaps drawing (bezel render draws a
+// page of text top to bottom: TextRenderer::render_gray's rows_final callback feeds this).
+// Contract: `page` stays valid until finish() returns or the stream is destroyed; once rows
+// [0, n) are declared final the caller no longer writes them (other rows it may write at any
+// time: the workers read only final rows). The result equals encode_png_gray(page, threads)
+// for any threads > 1. One stream encodes one page; it is not itself shared between threads.
+class PngGrayStream {
+public:
+    PngGrayStream(ConstMaskView page, int workers);
+    ~PngGrayStream();  // stops and joins the workers (after an abandoned page, too)
+    PngGrayStream(const PngGrayStream&) = delete;
+    PngGrayStream& operator=(const PngGrayStream&) = delete;
+
+    // Rows [0, rows) will not change any more (monotone: a smaller value than before is
+    // ignored). Costs an integer compare unless a band boundary is crossed.
+    void rows_final(int rows);
+    // Every row is final: this thread deflates the bands no worker has taken, joins the workers
+    // and assembles the PNG. Call once.
+    Expected<std::vector<std::uint8_t>> finish();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
 // Netpbm: binary PGM (P5, luma) or PPM (P6, RGB), alpha dropped.
 std::vector<std::uint8_t> encode_pgm(const Image& image);
 std::vector<std::uint8_t> encode_ppm(const Image& image);

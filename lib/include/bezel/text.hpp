@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -275,12 +276,23 @@ public:
     // pixel, with a quarter of the memory to fill and blend. Errors as render(), plus a
     // foreground or background that is not opaque gray, or a mode other than RenderMode::Gray.
     Expected<Mask> render_gray(std::string_view utf8, const TextRenderOptions& options);
+    // The same page drawn into `page` (replaced by the new page before any glyph is drawn),
+    // telling rows_final(n) whenever rows [0, n) will not be written again, so a consumer can
+    // work on the finished top of the page while the rest is drawn (bezel render deflates PNG
+    // bands meanwhile: PngGrayStream). Glyphs are blended in layout order and a row is final
+    // once no glyph still to come reaches it; n never decreases, and the last call has n = the
+    // page height. rows_final must not write the page or resize it. The tops of the glyphs
+    // still to come are known before drawing, at the cost of one more glyph-cache lookup per
+    // glyph. Errors as render_gray; after an error `page` holds what was drawn.
+    Status render_gray(std::string_view utf8, const TextRenderOptions& options, Mask& page,
+                       const std::function<void(int rows)>& rows_final);
 
 private:
     struct Impl;
     template <typename Page, typename MakePage, typename Blend>
-    Expected<Page> draw(std::string_view utf8, const TextRenderOptions& options,
-                        MakePage&& make_page, Blend&& blend);
+    Status draw(std::string_view utf8, const TextRenderOptions& options, Page& page,
+                MakePage&& make_page, Blend&& blend,
+                const std::function<void(int rows)>* rows_final = nullptr);
     explicit TextRenderer(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
 };

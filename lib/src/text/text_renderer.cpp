@@ -4,9 +4,13 @@
 // integer column and a bin (so the cache's floor-quantization sees an exact bin and the error is
 // at most 1/8 px); a pen y is rounded to a whole pixel, so every glyph of a line shares one
 // baseline row and horizontal stems stay crisp.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "bezel/text.hpp"
 
@@ -77,8 +81,9 @@ GlyphCache& TextRenderer::cache() { return impl_->cache; }
 // placed glyph's cached mask and its top-left pixel to blend(page, mask, x, y). One loop for the
 // RGBA and the gray page.
 template <typename Page, typename MakePage, typename Blend>
-Expected<Page> TextRenderer::draw(std::string_view utf8, const TextRenderOptions& options,
-                                  MakePage&& make_page, Blend&& blend) {
+Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& options, Page& page,
+                          MakePage&& make_page, Blend&& blend,
+                          const std::function<void(int rows)>* rows_final) {
     Impl& r = *impl_;
     if (!same_variations(options.shape.variations, r.variations)) {
         if (auto set = r.font.set_variations(options.shape.variations); !set) {
@@ -98,43 +103,82 @@ Expected<Page> TextRenderer::draw(std::string_view utf8, const TextRenderOptions
                      " px is too large (at most " + std::to_string(kMaxImageDim) + " px a side, " +
                      std::to_string(static_cast<long>(kMaxPagePixels)) + " px in all)"};
     // A page is at least one pixel: empty text still gives a (background) image.
-    Page page = make_page(std::max(1, static_cast<int>(w)), std::max(1, static_cast<int>(h)));
+    const int page_h = std::max(1, static_cast<int>(h));
+    page = make_page(std::max(1, static_cast<int>(w)), page_h);
 
     GlyphRenderOptions glyph;
     glyph.size_px = options.shape.size_px;
     glyph.mode = options.mode;
-    for (const PlacedGlyph& g : layout->glyphs) {
+    // The cached glyph at g's pen, with its top-left pixel; null for a pen far off the page (a
+    // huge margin is refused by the size check above; this guards the int conversions) or an
+    // empty glyph.
+    auto look_up = [&](const PlacedGlyph& g, int& x, int& y) -> Expected<const CachedGlyph*> {
         const double quarters = std::floor(g.x * kSubpixelBins + 0.5);
         const double column = std::floor(quarters / kSubpixelBins);
         glyph.subpixel_x = (quarters - column * kSubpixelBins) / kSubpixelBins;
         const double row = std::floor(g.y + 0.5);
-        // Pens far off the page (a huge margin is refused by the size check above; this guards
-        // the int conversions) draw nothing.
-        if (std::fabs(column) > kMaxImageDim * 2.0 || std::fabs(row) > kMaxImageDim * 2.0) continue;
+        if (std::fabs(column) > kMaxImageDim * 2.0 || std::fabs(row) > kMaxImageDim * 2.0)
+            return nullptr;
         auto cached = r.cache.get(r.rasterizer, r.font_id, g.gid, glyph);
         if (!cached) return cached.error();
         const CachedGlyph& c = **cached;
-        if (c.box.width == 0) continue;
-        blend(page, c.mask, static_cast<int>(column) + c.box.left,
-              static_cast<int>(row) - c.box.top);
+        if (c.box.width == 0) return nullptr;
+        x = static_cast<int>(column) + c.box.left;
+        y = static_cast<int>(row) - c.box.top;
+        return &c;
+    };
+    const std::vector<PlacedGlyph>& glyphs = layout->glyphs;
+    // first_row[i]: the top row of glyphs i.. (page_h when none reaches the page).
+    std::vector<int> first_row;
+    if (rows_final != nullptr) {
+        first_row.assign(glyphs.size() + 1, page_h);
+        for (std::size_t i = glyphs.size(); i-- > 0;) {
+            int x = 0, y = page_h;
+            auto c = look_up(glyphs[i], x, y);
+            if (!c) return c.error();
+            first_row[i] = std::min(first_row[i + 1], *c != nullptr ? y : page_h);
+        }
     }
-    return page;
+    int reported = 0;
+    for (std::size_t i = 0; i < glyphs.size(); ++i) {
+        int x = 0, y = 0;
+        auto c = look_up(glyphs[i], x, y);
+        if (!c) return c.error();
+        if (*c != nullptr) blend(page, (*c)->mask, x, y);
+        if (rows_final != nullptr && first_row[i + 1] > reported) {
+            reported = first_row[i + 1];
+            (*rows_final)(reported);
+        }
+    }
+    if (rows_final != nullptr) (*rows_final)(page_h);
+    return ok_status();
 }
 
 Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOptions& options) {
-    return draw<Image>(
-        utf8, options, [&](int w, int h) { return Image(w, h, options.background); },
-        [&](Image& page, ConstMaskView mask, int x, int y) {
+    Image out;
+    auto drawn = draw<Image>(
+        utf8, options, out, [&](int w, int h) { return Image(w, h, options.background); },
+        [&](Image& onto, ConstMaskView mask, int x, int y) {
             if (options.mode == RenderMode::Gray)
-                blend_mask(page, mask, x, y, options.foreground);
+                blend_mask(onto, mask, x, y, options.foreground);
             else
                 // fill_path_lcd already stores R, G, B coverage per pixel whatever the panel's
                 // order (a BGR panel's samples are reversed there), so the bytes are RGB here.
-                blend_lcd_mask(page, mask, x, y, options.foreground, /*bgr=*/false);
+                blend_lcd_mask(onto, mask, x, y, options.foreground, /*bgr=*/false);
         });
+    if (!drawn) return drawn.error();
+    return out;
 }
 
 Expected<Mask> TextRenderer::render_gray(std::string_view utf8, const TextRenderOptions& options) {
+    Mask out;
+    auto drawn = render_gray(utf8, options, out, {});
+    if (!drawn) return drawn.error();
+    return out;
+}
+
+Status TextRenderer::render_gray(std::string_view utf8, const TextRenderOptions& options,
+                                 Mask& page, const std::function<void(int rows)>& rows_final) {
     const Rgba8 fg = options.foreground, bg = options.background;
     if (options.mode != RenderMode::Gray)
         return Error{"render_gray: needs RenderMode::Gray (LCD coverage is per channel)"};
@@ -142,15 +186,16 @@ Expected<Mask> TextRenderer::render_gray(std::string_view utf8, const TextRender
           bg.a == 255))
         return Error{"render_gray: needs opaque gray foreground and background colours"};
     return draw<Mask>(
-        utf8, options,
+        utf8, options, page,
         [&](int w, int h) {
-            Mask page(w, h);
-            if (bg.r != 0) std::memset(page.view().data, bg.r, page.pixels().size());
-            return page;
+            Mask fresh(w, h);
+            if (bg.r != 0) std::memset(fresh.view().data, bg.r, fresh.pixels().size());
+            return fresh;
         },
-        [&](Mask& page, ConstMaskView mask, int x, int y) {
-            blend_mask_gray(page.view(), mask, x, y, fg.r);
-        });
+        [&](Mask& onto, ConstMaskView mask, int x, int y) {
+            blend_mask_gray(onto.view(), mask, x, y, fg.r);
+        },
+        rows_final ? &rows_final : nullptr);
 }
 
 }  // namespace bezel
