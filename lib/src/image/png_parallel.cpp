@@ -1,6 +1,7 @@
-// encode_png_gray(mask, threads) and PngGrayStream: a PNG written by hand around zlib, so the
-// deflating can be split across threads (libpng deflates one stream on the calling thread only)
-// and can start on the top of a page while its bottom is still being drawn.
+// encode_png_gray(mask, threads) and PngGrayStream: a PNG written by hand, so the deflating can
+// be split across threads (libpng deflates one stream on the calling thread only), can start on
+// the top of a page while its bottom is still being drawn, and can use a faster deflater than
+// zlib: ISA-L's igzip (Debian libisal-dev).
 //
 // PNG layout (ISO/IEC 15948): the 8-byte signature, then chunks of {length (4 bytes, big
 // endian), type (4), data, CRC-32 of type and data}: IHDR (width, height, bit depth 8, colour
@@ -9,16 +10,21 @@
 //
 // The zlib stream (RFC 1950) is a 2-byte header, raw deflate data (RFC 1951) and the Adler-32 of
 // the uncompressed bytes. Band k (rows [64k, 64k + 64)) is deflated raw on its own; every band
-// but the last ends with Z_SYNC_FLUSH (a non-final empty stored block, so the next band's blocks
-// start on a byte boundary) and the last with Z_FINISH (the final block), so their concatenation
-// is one valid deflate stream. The Adler-32s of the bands are joined with adler32_combine.
+// but the last ends with a sync flush (a non-final empty stored block, so the next band's blocks
+// start on a byte boundary) and the last with the final block, so their concatenation is one
+// valid deflate stream. The Adler-32s of the bands are joined with zlib's adler32_combine.
+//
+// Why igzip: on the 716×2361 benchmark page in 64-row bands (one thread, idle 2-core VM, min of
+// 20), igzip level 1 takes 3.7 ms for 292 795 bytes, where zlib level 1 (libpng's fastest, used
+// before) took about 11 ms for 299 587 bytes; valgrind counts 22 M against 61 M instructions.
+// igzip level 0 is faster still (2.5 ms) but 16 % larger.
 //
 // Why 64-row bands whatever the thread count: a worker can start while a page of text is still
 // drawn (a 16 px line of text is ~19 rows), and the bytes do not depend on the core count. The
-// price is size, since each band starts with an empty history: on the 716×2361 benchmark page
-// 299 587 bytes against 265 362 for one stream (+13 %). Priming each band with the rows above
-// it (deflateSetDictionary) won most of that back (16 rows: 276 239 bytes) but cost 8–46 % more
-// instructions (valgrind, 16–45 rows), and this writer exists for speed.
+// price is size, since each band starts with an empty history (with zlib: +13 % against one
+// stream; priming each band with the rows above it won most of that back but cost 8–46 % more
+// instructions, and this writer exists for speed).
+#include <isa-l/igzip_lib.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -36,7 +42,7 @@ namespace bezel {
 
 namespace {
 
-constexpr int kLevel = 1;  // as the libpng writer (encode_png.cpp): speed over size
+constexpr int kLevel = 1;  // igzip's levels are 0..3; see above
 
 struct Band {
     int y0 = 0, y1 = 0;
@@ -46,47 +52,54 @@ struct Band {
 };
 
 // One z_stream, reused from band to band (deflateReset keeps its ~300 KB of tables).
+// One igzip level-1 work buffer (hash table and 16 Ki tokens, ~84 KiB), reused from band to
+// band; the "small" size, since a band is only ~64 rows (same bytes, same speed as the default).
 class Deflater {
 public:
-    Deflater() { ok_ = deflateInit2(&z_, kLevel, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) == Z_OK; }
-    ~Deflater() {
-        if (ok_) deflateEnd(&z_);
-    }
-    Deflater(const Deflater&) = delete;
-    Deflater& operator=(const Deflater&) = delete;
+    Deflater() : level_buf_(ISAL_DEF_LVL1_SMALL) {}
 
     void run(ConstMaskView mask, bool last, Band& band) {
-        if (!ok_ || deflateReset(&z_) != Z_OK) return;
-        z_stream& z = z_;
-        const uLong raw =
-            static_cast<uLong>(band.y1 - band.y0) * (static_cast<uLong>(mask.width) + 1);
-        band.deflated.resize(deflateBound(&z, raw) + 16);
-        z.next_out = band.deflated.data();
-        z.avail_out = static_cast<uInt>(band.deflated.size());
-        band.adler = adler32(0L, Z_NULL, 0);
-        static const Bytef kFilterNone = 0;
-        bool ok = true;
-        for (int y = band.y0; y < band.y1 && ok; ++y) {
-            const bool end = y + 1 == band.y1;
-            z.next_in = const_cast<Bytef*>(&kFilterNone);
-            z.avail_in = 1;
-            ok = deflate(&z, Z_NO_FLUSH) == Z_OK;
-            z.next_in = const_cast<Bytef*>(mask.row(y));
-            z.avail_in = static_cast<uInt>(mask.width);
-            const int flush = !end ? Z_NO_FLUSH : last ? Z_FINISH : Z_SYNC_FLUSH;
-            const int rc = deflate(&z, flush);
-            ok = ok && (flush == Z_FINISH ? rc == Z_STREAM_END : rc == Z_OK) && z.avail_in == 0;
-            band.adler = adler32(band.adler, &kFilterNone, 1);
-            band.adler = adler32(band.adler, mask.row(y), static_cast<uInt>(mask.width));
+        // The band's scanlines as the stream holds them: filter byte 0, then the pixels.
+        const std::size_t row_bytes = static_cast<std::size_t>(mask.width) + 1;
+        raw_.resize(static_cast<std::size_t>(band.y1 - band.y0) * row_bytes);
+        for (int y = band.y0; y < band.y1; ++y) {
+            std::uint8_t* r = raw_.data() + static_cast<std::size_t>(y - band.y0) * row_bytes;
+            r[0] = 0;
+            std::memcpy(r + 1, mask.row(y), static_cast<std::size_t>(mask.width));
         }
-        band.length = raw;
+        band.length = raw_.size();
+        band.adler = isal_adler32(1, raw_.data(), raw_.size());
+        // Room for stored blocks (5 bytes per 64 KiB) should nothing compress; grown if not.
+        band.deflated.resize(raw_.size() + raw_.size() / 64 + 64);
+        isal_zstream z;
+        isal_deflate_init(&z);
+        z.level = kLevel;
+        z.level_buf = level_buf_.data();
+        z.level_buf_size = static_cast<std::uint32_t>(level_buf_.size());
+        z.flush = SYNC_FLUSH;
+        z.end_of_stream = last ? 1 : 0;
+        z.next_in = raw_.data();
+        z.avail_in = static_cast<std::uint32_t>(raw_.size());
+        z.next_out = band.deflated.data();
+        z.avail_out = static_cast<std::uint32_t>(band.deflated.size());
+        for (;;) {
+            if (isal_deflate(&z) != COMP_OK) return;
+            // Everything is in (and, for the last band, the final block written) once igzip
+            // returns with output room to spare.
+            if (z.avail_in == 0 && z.avail_out > 0 &&
+                (!last || z.internal_state.state == ZSTATE_END))
+                break;
+            const std::size_t used = band.deflated.size() - z.avail_out;
+            band.deflated.resize(band.deflated.size() * 2);
+            z.next_out = band.deflated.data() + used;
+            z.avail_out = static_cast<std::uint32_t>(band.deflated.size() - used);
+        }
         band.deflated.resize(band.deflated.size() - z.avail_out);
-        band.ok = ok;
+        band.ok = true;
     }
 
 private:
-    z_stream z_{};
-    bool ok_ = false;
+    std::vector<std::uint8_t> level_buf_, raw_;
 };
 
 void put32(std::vector<std::uint8_t>& out, std::uint32_t v) {
