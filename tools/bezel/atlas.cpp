@@ -27,7 +27,7 @@
 namespace bezel::cli {
 namespace {
 
-constexpr const char* kCommand = "bezel atlas";
+constexpr const char* kAtlasCommand = "bezel atlas";
 constexpr double kDefaultAtlasSizePx = 32.0;
 // Distinct characters one atlas takes: all of a large CJK set, still a bounded amount of work
 // (the texture side limit kMaxImageDim bounds the pixels).
@@ -49,20 +49,20 @@ struct Entry {
 
 int run_atlas(AtlasArgs& args) {
     if (args.cmd->count("--hinting") > 0)
-        return fail_usage("--hinting: atlas glyphs are rendered unhinted", kCommand);
-    if (auto ok = check_font_size(args.font); !ok) return fail_usage(ok.error().message, kCommand);
+        return fail_usage("--hinting: atlas glyphs are rendered unhinted", kAtlasCommand);
+    if (auto ok = check_font_size(args.font); !ok) return fail_usage(ok.error().message, kAtlasCommand);
     if (args.output_file == "-" && (args.json_file.empty() || args.json_file == "-"))
-        return fail_usage("-o - and the JSON cannot both go to stdout (give --json FILE)", kCommand);
+        return fail_usage("-o - and the JSON cannot both go to stdout (give --json FILE)", kAtlasCommand);
     auto code_points = decode_utf8(args.chars);
-    if (!code_points) return fail_usage("--chars: " + code_points.error().message, kCommand);
+    if (!code_points) return fail_usage("--chars: " + code_points.error().message, kAtlasCommand);
     std::u32string distinct;
     for (char32_t c : *code_points)
         if (distinct.find(c) == std::u32string::npos) distinct.push_back(c);
-    if (distinct.empty()) return fail_usage("--chars: no characters given", kCommand);
+    if (distinct.empty()) return fail_usage("--chars: no characters given", kAtlasCommand);
     if (distinct.size() > kMaxAtlasChars)
         return fail_usage("--chars: more than " + std::to_string(kMaxAtlasChars) +
                               " distinct characters",
-                          kCommand);
+                          kAtlasCommand);
 
     auto font = open_font(args.font);
     if (!font) return fail_runtime(font.error().message);

@@ -51,7 +51,7 @@ struct BenchRow {
     std::size_t glyphs = 0;
 };
 
-const std::string kCommand = "bezel bench";
+const std::string kBenchCommand = "bezel bench";
 
 double thread_ns() {
     timespec ts{};
@@ -201,11 +201,11 @@ int run_bench(const BenchArgs& args) {
         return written ? kExitOk : fail_runtime(written.error().message);
     }
     auto sizes = parse_sizes(args.sizes);
-    if (!sizes) return fail_usage(sizes.error().message, kCommand);
+    if (!sizes) return fail_usage(sizes.error().message, kBenchCommand);
     if (args.repeat < 1 || args.repeat > kMaxBenchRepeat)
         return fail_usage("--repeat " + std::to_string(args.repeat) + ": expected 1.." +
                               std::to_string(kMaxBenchRepeat),
-                          kCommand);
+                          kBenchCommand);
     auto font = Font::open(args.font);
     if (!font) return fail_runtime(font.error().message);
     std::vector<BenchRow> rows;

@@ -14,7 +14,7 @@
 namespace bezel::cli {
 namespace {
 
-constexpr const char* kCommand = "bezel continuity";
+constexpr const char* kContinuityCommand = "bezel continuity";
 
 struct ContinuityArgs {
     std::string path;  // SVG path data
@@ -25,11 +25,11 @@ struct ContinuityArgs {
 
 int run_continuity(const ContinuityArgs& args) {
     auto format = choose_format(args.format, args.output_file, OutputFormat::Text);
-    if (!format) return fail_usage(format.error().message, kCommand);
+    if (!format) return fail_usage(format.error().message, kContinuityCommand);
     if (*format == OutputFormat::Svg)
-        return fail_usage("-O svg: continuity prints text or json", kCommand);
+        return fail_usage("-O svg: continuity prints text or json", kContinuityCommand);
     auto path = parse_svg_path(args.path);
-    if (!path) return fail_usage("PATH: " + path.error().message, kCommand);
+    if (!path) return fail_usage("PATH: " + path.error().message, kContinuityCommand);
     auto joints = analyze_continuity(*path, args.tolerance);
     if (!joints) return fail_runtime(joints.error().message);
     std::string document = *format == OutputFormat::Json

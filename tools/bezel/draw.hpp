@@ -11,6 +11,11 @@
 
 namespace bezel::cli {
 
+// The pictures' scale: kDisplayPx display pixels on the longer side, whatever the input's units;
+// stroke widths and dot sizes are counted in display pixels, so pictures look alike.
+inline constexpr double kDisplayPx = 600.0;
+inline constexpr double kPi = 3.14159265358979323846;
+
 // A number for SVG attributes and path data: 6 significant digits ("%.6g").
 std::string svg_number(double v);
 

@@ -27,7 +27,7 @@ struct FillArgs {
     double tolerance_px = kDefaultRasterTolerancePx;
 };
 
-const std::string kCommand = "bezel fill";
+const std::string kFillCommand = "bezel fill";
 
 Expected<FillFormat> pick_format(const FillArgs& args) {
     auto name = pick_picture_format(args.format, args.output_file,
@@ -66,16 +66,16 @@ Status check_dim(const char* option, int v) {
 
 int run_fill(const FillArgs& args) {
     auto format = pick_format(args);
-    if (!format) return fail_usage(format.error().message, kCommand);
-    if (Status s = check_dim("--width", args.width); !s) return fail_usage(s.error().message, kCommand);
+    if (!format) return fail_usage(format.error().message, kFillCommand);
+    if (Status s = check_dim("--width", args.width); !s) return fail_usage(s.error().message, kFillCommand);
     if (Status s = check_dim("--height", args.height); !s)
-        return fail_usage(s.error().message, kCommand);
+        return fail_usage(s.error().message, kFillCommand);
     auto transform = parse_transform(args.transform);
-    if (!transform) return fail_usage(transform.error().message, kCommand);
+    if (!transform) return fail_usage(transform.error().message, kFillCommand);
     if (Status t = check_tolerance(args.tolerance_px); !t)
-        return fail_usage(t.error().message, kCommand);
+        return fail_usage(t.error().message, kFillCommand);
     auto path = parse_svg_path(args.path_data);
-    if (!path) return fail_usage("PATH: " + path.error().message, kCommand);
+    if (!path) return fail_usage("PATH: " + path.error().message, kFillCommand);
 
     Mask mask(args.width, args.height);
     Rasterizer raster;

@@ -25,7 +25,7 @@ struct GlyphArgs {
     CLI::Option* text_option = nullptr;
 };
 
-const std::string kCommand = "bezel glyph";
+const std::string kGlyphCommand = "bezel glyph";
 
 // -O wins; else the -o file's extension; else ASCII on stdout.
 Expected<GlyphFormat> pick_format(const GlyphArgs& args) {
@@ -102,11 +102,11 @@ Expected<std::vector<GlyphRequest>> requested(const GlyphArgs& args, const Font&
 
 int run_glyph(const GlyphArgs& args) {
     auto format = pick_format(args);
-    if (!format) return fail_usage(format.error().message, kCommand);
+    if (!format) return fail_usage(format.error().message, kGlyphCommand);
     auto offset = parse_offset(args.offset);
-    if (!offset) return fail_usage(offset.error().message, kCommand);
+    if (!offset) return fail_usage(offset.error().message, kGlyphCommand);
     if (Status t = check_tolerance(args.tolerance_px); !t)
-        return fail_usage(t.error().message, kCommand);
+        return fail_usage(t.error().message, kGlyphCommand);
     if (auto size_ok = check_font_size(args.font); !size_ok)
         return fail_runtime(size_ok.error().message);
 

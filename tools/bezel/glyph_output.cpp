@@ -22,7 +22,7 @@ std::string char_label(const GlyphBitmap& g) {
     return " '" + utf8 + "' " + format_code_point(*g.code_point);
 }
 
-std::string number(double v) {
+std::string six_digits(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6g", v);
     return buf;
@@ -107,9 +107,9 @@ std::string glyphs_ascii(const std::vector<GlyphBitmap>& glyphs, const GlyphRend
     std::string out;
     for (const GlyphBitmap& g : glyphs) {
         out += "glyph " + std::to_string(g.gid) + " " + g.name + char_label(g) + ", " +
-               number(s.size_px) + " px, " + mode_name(g.mode) + ": " + std::to_string(g.width) +
+               six_digits(s.size_px) + " px, " + mode_name(g.mode) + ": " + std::to_string(g.width) +
                "x" + std::to_string(g.height) + ", left " + std::to_string(g.left) + ", top " +
-               std::to_string(g.top) + ", advance " + number(g.advance_px);
+               std::to_string(g.top) + ", advance " + six_digits(g.advance_px);
         if (g.accurate_overlap) out += ", accurate overlap";
         if (g.mode != GlyphMode::Gray) out += " (one character per subpixel)";
         out += "\n";

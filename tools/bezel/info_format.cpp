@@ -24,7 +24,7 @@ namespace {
 
 using nlohmann::ordered_json;
 
-std::string number(double v) {
+std::string plain_number(double v) {
     char buf[40];
     std::snprintf(buf, sizeof buf, "%g", v);
     return buf;
@@ -34,7 +34,7 @@ std::string coordinates_text(const NamedInstance& instance) {
     std::string s;
     for (const VariationSetting& c : instance.coordinates) {
         if (!s.empty()) s += ",";
-        s += c.tag + "=" + number(c.value);
+        s += c.tag + "=" + plain_number(c.value);
     }
     return s;
 }
@@ -60,12 +60,12 @@ std::string format_info_text(const FontInfo& info) {
     line(out, "glyphs", std::to_string(info.glyph_count));
     line(out, "outlines", info.outline_format);
     line(out, "units/em", std::to_string(info.metrics.units_per_em));
-    line(out, "ascender", number(info.metrics.ascender));
-    line(out, "descender", number(info.metrics.descender));
-    line(out, "line gap", number(info.metrics.line_gap));
+    line(out, "ascender", plain_number(info.metrics.ascender));
+    line(out, "descender", plain_number(info.metrics.descender));
+    line(out, "line gap", plain_number(info.metrics.line_gap));
     for (const VariationAxis& a : info.axes)
-        line(out, "axis", a.tag + " " + number(a.min_value) + ".." + number(a.default_value) +
-                              ".." + number(a.max_value) + " (" + a.name + ")");
+        line(out, "axis", a.tag + " " + plain_number(a.min_value) + ".." + plain_number(a.default_value) +
+                              ".." + plain_number(a.max_value) + " (" + a.name + ")");
     for (const NamedInstance& i : info.instances)
         line(out, "instance", i.name + " " + coordinates_text(i));
     std::string scripts;

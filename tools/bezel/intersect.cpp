@@ -20,25 +20,25 @@ struct IntersectArgs {
     CLI::Option* b_option = nullptr;
 };
 
-enum class Format { Text, Json, Svg, Png };
+enum class IntersectFormat { Text, Json, Svg, Png };
 
 // -O wins; else a .png output file means PNG; else the shared rule (extension or text).
-Expected<Format> pick_format(const IntersectArgs& args) {
-    if (args.format == "png") return Format::Png;
+Expected<IntersectFormat> pick_format(const IntersectArgs& args) {
+    if (args.format == "png") return IntersectFormat::Png;
     if (args.format.empty() && !args.output_file.empty()) {
         std::string ext = std::filesystem::path(args.output_file).extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(),
                        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        if (ext == ".png") return Format::Png;
+        if (ext == ".png") return IntersectFormat::Png;
     }
     auto f = choose_format(args.format, args.output_file, OutputFormat::Text);
     if (!f) return f.error();
     switch (*f) {
-        case OutputFormat::Text: return Format::Text;
-        case OutputFormat::Json: return Format::Json;
-        case OutputFormat::Svg: return Format::Svg;
+        case OutputFormat::Text: return IntersectFormat::Text;
+        case OutputFormat::Json: return IntersectFormat::Json;
+        case OutputFormat::Svg: return IntersectFormat::Svg;
     }
-    return Format::Text;
+    return IntersectFormat::Text;
 }
 
 int run_intersect(const IntersectArgs& args) {
@@ -63,10 +63,10 @@ int run_intersect(const IntersectArgs& args) {
 
     std::string document;
     switch (*format) {
-        case Format::Text: document = format_intersect_text(report); break;
-        case Format::Json: document = format_intersect_json(report); break;
-        case Format::Svg: document = format_intersect_svg(report); break;
-        case Format::Png: {
+        case IntersectFormat::Text: document = format_intersect_text(report); break;
+        case IntersectFormat::Json: document = format_intersect_json(report); break;
+        case IntersectFormat::Svg: document = format_intersect_svg(report); break;
+        case IntersectFormat::Png: {
             auto png = format_intersect_png(report);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);

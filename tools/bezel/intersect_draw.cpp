@@ -18,8 +18,6 @@
 namespace bezel::cli {
 namespace {
 
-constexpr double kDisplayPx = 600.0;
-constexpr double kPi = 3.14159265358979323846;
 constexpr const char* kColorA = "#1565c0";
 constexpr const char* kColorB = "#c62828";
 constexpr const char* kColorOverlap = "#fbc02d";

@@ -9,7 +9,7 @@ namespace bezel::cli {
 namespace {
 
 // 17 significant digits: every double reads back to itself.
-std::string num(double v) {
+std::string exact_number(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.17g", v);
     return buf;
@@ -26,14 +26,14 @@ std::string format_intersect_text(const IntersectReport& r) {
     out += std::to_string(xs.size()) + (xs.size() == 1 ? " intersection" : " intersections");
     out += ", " + std::to_string(os.size()) + (os.size() == 1 ? " overlap" : " overlaps") + "\n";
     for (const PathIntersection& p : xs) {
-        out += "  " + std::string(intersection_kind_name(p.kind)) + " at (" + num(p.point.x) + ", " +
-               num(p.point.y) + "): A seg " + idx(p.seg_a) + " t=" + num(p.t_a) + ", " +
-               (r.self ? "A" : "B") + " seg " + idx(p.seg_b) + " t=" + num(p.t_b) + "\n";
+        out += "  " + std::string(intersection_kind_name(p.kind)) + " at (" + exact_number(p.point.x) + ", " +
+               exact_number(p.point.y) + "): A seg " + idx(p.seg_a) + " t=" + exact_number(p.t_a) + ", " +
+               (r.self ? "A" : "B") + " seg " + idx(p.seg_b) + " t=" + exact_number(p.t_b) + "\n";
     }
     for (const PathOverlap& o : os) {
-        out += "  overlap: A seg " + idx(o.seg_a) + " t=[" + num(o.t_a0) + ", " + num(o.t_a1) + "], " +
-               (r.self ? "A" : "B") + " seg " + idx(o.seg_b) + " t=[" + num(o.t_b0) + ", " +
-               num(o.t_b1) + "]\n";
+        out += "  overlap: A seg " + idx(o.seg_a) + " t=[" + exact_number(o.t_a0) + ", " + exact_number(o.t_a1) + "], " +
+               (r.self ? "A" : "B") + " seg " + idx(o.seg_b) + " t=[" + exact_number(o.t_b0) + ", " +
+               exact_number(o.t_b1) + "]\n";
     }
     return out;
 }
@@ -44,9 +44,9 @@ std::string format_intersect_json(const IntersectReport& r) {
     for (const PathIntersection& p : r.result.intersections) {
         out += sep;
         sep = ",\n  ";
-        out += "{\"seg_a\": " + idx(p.seg_a) + ", \"t_a\": " + num(p.t_a) + ", \"seg_b\": " +
-               idx(p.seg_b) + ", \"t_b\": " + num(p.t_b) + ", \"x\": " + num(p.point.x) +
-               ", \"y\": " + num(p.point.y) + ", \"kind\": \"" + intersection_kind_name(p.kind) +
+        out += "{\"seg_a\": " + idx(p.seg_a) + ", \"t_a\": " + exact_number(p.t_a) + ", \"seg_b\": " +
+               idx(p.seg_b) + ", \"t_b\": " + exact_number(p.t_b) + ", \"x\": " + exact_number(p.point.x) +
+               ", \"y\": " + exact_number(p.point.y) + ", \"kind\": \"" + intersection_kind_name(p.kind) +
                "\"}";
     }
     out += r.result.intersections.empty() ? "]" : "\n]";
@@ -55,8 +55,8 @@ std::string format_intersect_json(const IntersectReport& r) {
     for (const PathOverlap& o : r.result.overlaps) {
         out += sep;
         sep = ",\n  ";
-        out += "{\"seg_a\": " + idx(o.seg_a) + ", \"t_a\": [" + num(o.t_a0) + ", " + num(o.t_a1) +
-               "], \"seg_b\": " + idx(o.seg_b) + ", \"t_b\": [" + num(o.t_b0) + ", " + num(o.t_b1) +
+        out += "{\"seg_a\": " + idx(o.seg_a) + ", \"t_a\": [" + exact_number(o.t_a0) + ", " + exact_number(o.t_a1) +
+               "], \"seg_b\": " + idx(o.seg_b) + ", \"t_b\": [" + exact_number(o.t_b0) + ", " + exact_number(o.t_b1) +
                "]}";
     }
     out += r.result.overlaps.empty() ? "]" : "\n]";

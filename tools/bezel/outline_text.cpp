@@ -11,7 +11,7 @@ namespace bezel::cli {
 namespace {
 
 // Three decimals, and never "-0.000".
-std::string num(double v) {
+std::string three_decimals(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3f", v);
     std::string s = buf;
@@ -19,7 +19,7 @@ std::string num(double v) {
     return s;
 }
 
-std::string pt(Point p) { return "(" + num(p.x) + ", " + num(p.y) + ")"; }
+std::string pt(Point p) { return "(" + three_decimals(p.x) + ", " + three_decimals(p.y) + ")"; }
 
 // Direction as seen, and what it makes the contour under the font's convention (TrueType: outer
 // contours clockwise; CFF: counter-clockwise). Without nesting analysis this is what the
@@ -34,9 +34,9 @@ std::string describe_direction(Direction d, bool cubic) {
 void write_header(std::ostringstream& out, const OutlineReport& r) {
     out << "font     " << r.family << ' ' << r.style << "  (" << r.font_file << ", face "
         << r.face_index << ", " << (r.cubic ? "CFF cubic" : "TrueType quadratic") << " outlines)\n";
-    out << "size     " << num(r.size_px) << " px, " << (r.hinting ? "hinted" : "unhinted") << "; "
-        << r.metrics.units_per_em << " units/em; ascender " << num(r.ascender_px())
-        << " px, descender " << num(r.descender_px()) << " px (y up)\n";
+    out << "size     " << three_decimals(r.size_px) << " px, " << (r.hinting ? "hinted" : "unhinted") << "; "
+        << r.metrics.units_per_em << " units/em; ascender " << three_decimals(r.ascender_px())
+        << " px, descender " << three_decimals(r.descender_px()) << " px (y up)\n";
     if (!r.variations.empty()) {
         out << "axes    ";
         for (const auto& v : r.variations) out << ' ' << v.tag << '=' << v.value;
@@ -59,13 +59,13 @@ void write_glyph(std::ostringstream& out, const GlyphReport& g, bool cubic, bool
         out << ' ' << format_code_point(cp);
     }
     out << "  gid " << g.gid << "  name " << g.name << '\n';
-    out << "  advance " << num(o.metrics.advance_px);
-    if (several) out << "  pen x " << num(g.pen_x_px);
+    out << "  advance " << three_decimals(o.metrics.advance_px);
+    if (several) out << "  pen x " << three_decimals(g.pen_x_px);
     if (o.metrics.bounds_px.is_empty())
         out << "  bounds (empty)";
     else
-        out << "  bounds x " << num(o.metrics.bounds_px.x0) << " .. " << num(o.metrics.bounds_px.x1)
-            << "  y " << num(o.metrics.bounds_px.y0) << " .. " << num(o.metrics.bounds_px.y1);
+        out << "  bounds x " << three_decimals(o.metrics.bounds_px.x0) << " .. " << three_decimals(o.metrics.bounds_px.x1)
+            << "  y " << three_decimals(o.metrics.bounds_px.y0) << " .. " << three_decimals(o.metrics.bounds_px.y1);
     out << "  " << g.contours.size() << (g.contours.size() == 1 ? " contour, " : " contours, ")
         << o.points.size() << " points\n";
 
@@ -77,7 +77,7 @@ void write_glyph(std::ostringstream& out, const GlyphReport& g, bool cubic, bool
         for (std::size_t i = k.first; i <= k.last; ++i) {
             char line[128];
             std::snprintf(line, sizeof line, "    %4zu %10s %10s  %s\n", i,
-                          num(o.points[i].pos.x).c_str(), num(o.points[i].pos.y).c_str(),
+                          three_decimals(o.points[i].pos.x).c_str(), three_decimals(o.points[i].pos.y).c_str(),
                           point_kind_name(o.points[i].kind));
             out << line;
         }

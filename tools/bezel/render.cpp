@@ -22,7 +22,7 @@
 namespace bezel::cli {
 namespace {
 
-constexpr const char* kCommand = "bezel render";
+constexpr const char* kRenderCommand = "bezel render";
 // A paragraph size: body text on a screen is 13-20 px; 20 px keeps the README picture legible.
 // (hb-view's 256 px default suits one word, not a paragraph.)
 constexpr double kDefaultRenderSizePx = 20.0;
@@ -58,12 +58,12 @@ struct RenderArgs {
     CLI::App* cmd = nullptr;
 };
 
-Expected<Direction> parse_direction(const std::string& name) {
-    if (name.empty() || name == "auto") return Direction::Auto;
-    if (name == "ltr") return Direction::LeftToRight;
-    if (name == "rtl") return Direction::RightToLeft;
-    if (name == "ttb") return Direction::TopToBottom;
-    if (name == "btt") return Direction::BottomToTop;
+Expected<bezel::Direction> parse_direction(const std::string& name) {
+    if (name.empty() || name == "auto") return bezel::Direction::Auto;
+    if (name == "ltr") return bezel::Direction::LeftToRight;
+    if (name == "rtl") return bezel::Direction::RightToLeft;
+    if (name == "ttb") return bezel::Direction::TopToBottom;
+    if (name == "btt") return bezel::Direction::BottomToTop;
     return Error{"--direction '" + name + "': expected ltr, rtl, ttb, btt or auto"};
 }
 
@@ -143,35 +143,35 @@ Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
 int run_render(RenderArgs& args) {
     const bool tty = ::isatty(STDOUT_FILENO) != 0;
     auto format = pick_page_format(args.format, args.output_file, tty);
-    if (!format) return fail_usage(format.error().message, kCommand);
+    if (!format) return fail_usage(format.error().message, kRenderCommand);
     const bool preview = *format == PageFormat::Ansi;
     const int columns = preview ? terminal_columns() : 0;
 
     if (args.cmd->count("--hinting") > 0)
-        return fail_usage("--hinting: render draws unhinted outlines (subpixel-positioned)", kCommand);
+        return fail_usage("--hinting: render draws unhinted outlines (subpixel-positioned)", kRenderCommand);
     if (preview && args.cmd->count("--font-size") == 0) args.font.size_px = kDefaultPreviewSizePx;
-    if (auto ok = check_font_size(args.font); !ok) return fail_usage(ok.error().message, kCommand);
+    if (auto ok = check_font_size(args.font); !ok) return fail_usage(ok.error().message, kRenderCommand);
     if (args.cmd->count("TEXT") + args.cmd->count("--text") + args.cmd->count("--text-file") > 1)
-        return fail_usage("give the text once: TEXT, --text or --text-file", kCommand);
+        return fail_usage("give the text once: TEXT, --text or --text-file", kRenderCommand);
 
     TextRenderOptions options;
     options.shape.size_px = args.font.size_px;
     auto features = parse_features(args.features);
-    if (!features) return fail_usage("--features: " + features.error().message, kCommand);
+    if (!features) return fail_usage("--features: " + features.error().message, kRenderCommand);
     options.shape.features = std::move(*features);
     auto variations = parse_variations(args.font.variations);
-    if (!variations) return fail_usage(variations.error().message, kCommand);
+    if (!variations) return fail_usage(variations.error().message, kRenderCommand);
     options.shape.variations = std::move(*variations);
     auto direction = parse_direction(args.direction);
-    if (!direction) return fail_usage(direction.error().message, kCommand);
+    if (!direction) return fail_usage(direction.error().message, kRenderCommand);
     options.shape.direction = *direction;
     options.shape.script = args.script;
     options.shape.language = args.language;
 
     auto fg = parse_color(args.foreground);
-    if (!fg) return fail_usage("--foreground: " + fg.error().message, kCommand);
+    if (!fg) return fail_usage("--foreground: " + fg.error().message, kRenderCommand);
     auto bg = parse_color(args.background);
-    if (!bg) return fail_usage("--background: " + bg.error().message, kCommand);
+    if (!bg) return fail_usage("--background: " + bg.error().message, kRenderCommand);
     options.foreground = *fg;
     options.background = *bg;
     options.mode = args.lcd.empty() ? RenderMode::Gray
@@ -179,7 +179,7 @@ int run_render(RenderArgs& args) {
                                        : RenderMode::LcdRgb;
 
     if (args.stroke_px > 0 && options.mode != RenderMode::Gray)
-        return fail_usage("--stroke draws gray coverage; it does not combine with --lcd", kCommand);
+        return fail_usage("--stroke draws gray coverage; it does not combine with --lcd", kRenderCommand);
 
     if (preview && args.cmd->count("--margin") == 0) args.margin_px = kDefaultPreviewMarginPx;
     options.layout.margin_px = args.margin_px;

@@ -15,7 +15,7 @@
 namespace bezel::cli {
 namespace {
 
-constexpr const char* kCommand = "bezel smooth";
+constexpr const char* kSmoothCommand = "bezel smooth";
 
 struct SmoothArgs {
     std::string method;             // --method
@@ -34,10 +34,10 @@ struct SmoothArgs {
     CLI::App* cmd = nullptr;
 };
 
-enum class Format { Json, Svg, Path, Png };
+enum class SmoothFormat { Json, Svg, Path, Png };
 
 // -O wins; else the -o file's extension (.json, .svg, .png, .path/.txt); else JSON.
-Expected<Format> pick_format(const SmoothArgs& args) {
+Expected<SmoothFormat> pick_format(const SmoothArgs& args) {
     std::string name = args.format;
     if (name.empty() && !args.output_file.empty() && args.output_file != "-") {
         std::string ext = std::filesystem::path(args.output_file).extension().string();
@@ -51,10 +51,10 @@ Expected<Format> pick_format(const SmoothArgs& args) {
             return Error{args.output_file + ": cannot tell the output format from the extension '" +
                          ext + "' (use .json, .svg, .png or .path, or give -O)"};
     }
-    if (name.empty() || name == "json") return Format::Json;
-    if (name == "svg") return Format::Svg;
-    if (name == "path") return Format::Path;
-    if (name == "png") return Format::Png;
+    if (name.empty() || name == "json") return SmoothFormat::Json;
+    if (name == "svg") return SmoothFormat::Svg;
+    if (name == "path") return SmoothFormat::Path;
+    if (name == "png") return SmoothFormat::Png;
     return Error{"-O '" + name + "': unknown output format (expected json, svg, path or png)"};
 }
 
@@ -84,14 +84,14 @@ Status check_method_options(const SmoothArgs& args) {
 
 int run_smooth(const SmoothArgs& args) {
     auto format = pick_format(args);
-    if (!format) return fail_usage(format.error().message, kCommand);
-    if (auto ok = check_method_options(args); !ok) return fail_usage(ok.error().message, kCommand);
+    if (!format) return fail_usage(format.error().message, kSmoothCommand);
+    if (auto ok = check_method_options(args); !ok) return fail_usage(ok.error().message, kSmoothCommand);
 
     Expected<std::vector<Vec2>> points = args.cmd->count("--points") > 0
                                              ? parse_vec2_list(args.points, "--points")
                                              : read_points_file(args.points_file);
     if (!points)
-        return args.cmd->count("--points") > 0 ? fail_usage(points.error().message, kCommand)
+        return args.cmd->count("--points") > 0 ? fail_usage(points.error().message, kSmoothCommand)
                                                : fail_runtime(points.error().message);
 
     SmoothReport report;
@@ -122,7 +122,7 @@ int run_smooth(const SmoothArgs& args) {
     } else {  // hermite (CLI11 checked the name)
         if (args.cmd->count("--tangents") > 0) {
             auto tangents = parse_vec2_list(args.tangents, "--tangents");
-            if (!tangents) return fail_usage(tangents.error().message, kCommand);
+            if (!tangents) return fail_usage(tangents.error().message, kSmoothCommand);
             curve = hermite(*points, *tangents, args.closed);
         } else {
             curve = cardinal_spline(*points, args.tension, args.closed);
@@ -133,10 +133,10 @@ int run_smooth(const SmoothArgs& args) {
 
     std::string document;
     switch (*format) {
-        case Format::Json: document = format_smooth_json(report); break;
-        case Format::Path: document = format_smooth_path(report); break;
-        case Format::Svg: document = format_smooth_svg(report); break;
-        case Format::Png: {
+        case SmoothFormat::Json: document = format_smooth_json(report); break;
+        case SmoothFormat::Path: document = format_smooth_path(report); break;
+        case SmoothFormat::Svg: document = format_smooth_svg(report); break;
+        case SmoothFormat::Png: {
             auto png = format_smooth_png(report);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);

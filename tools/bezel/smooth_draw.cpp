@@ -18,8 +18,6 @@
 namespace bezel::cli {
 namespace {
 
-constexpr double kDisplayPx = 600.0;
-constexpr double kPi = 3.14159265358979323846;
 constexpr const char* kColorCurve = "#1565c0";
 constexpr const char* kColorPolygon = "#9e9e9e";
 constexpr const char* kColorHandle = "#ab47bc";

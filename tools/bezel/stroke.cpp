@@ -19,7 +19,7 @@
 namespace bezel::cli {
 namespace {
 
-constexpr const char* kCommand = "bezel stroke";
+constexpr const char* kStrokeCommand = "bezel stroke";
 
 struct StrokeArgs {
     std::string path;         // PATH (SVG path data)
@@ -142,14 +142,14 @@ Expected<std::string> read_path_file(const std::string& file) {
 
 int run_stroke(const StrokeArgs& args) {
     auto format = pick_format(args);
-    if (!format) return fail_usage(format.error().message, kCommand);
+    if (!format) return fail_usage(format.error().message, kStrokeCommand);
     auto style = style_of(args);
-    if (!style) return fail_usage(style.error().message, kCommand);
+    if (!style) return fail_usage(style.error().message, kStrokeCommand);
     bool png_only = !args.size.empty() || !args.transform.empty();
     if (png_only && *format != StrokeFormat::Png)
-        return fail_usage("--size and --transform apply only to -O png", kCommand);
+        return fail_usage("--size and --transform apply only to -O png", kStrokeCommand);
     auto frame = frame_of(args);
-    if (!frame) return fail_usage(frame.error().message, kCommand);
+    if (!frame) return fail_usage(frame.error().message, kStrokeCommand);
 
     std::string data = args.path;
     std::string input = "PATH";
@@ -162,7 +162,7 @@ int run_stroke(const StrokeArgs& args) {
     auto path = parse_svg_path(data);
     if (!path) {
         std::string msg = input + ": " + path.error().message;
-        return args.cmd->count("--path-file") > 0 ? fail_runtime(msg) : fail_usage(msg, kCommand);
+        return args.cmd->count("--path-file") > 0 ? fail_runtime(msg) : fail_usage(msg, kStrokeCommand);
     }
     auto outline = stroke(*path, *style);
     if (!outline) return fail_runtime(input + ": " + outline.error().message);

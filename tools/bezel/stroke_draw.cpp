@@ -11,7 +11,6 @@
 namespace bezel::cli {
 namespace {
 
-constexpr double kDisplayPx = 600.0;
 constexpr int kMarginPx = 2;
 
 const char* join_name(LineJoin j) {

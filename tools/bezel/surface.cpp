@@ -16,7 +16,7 @@
 namespace bezel::cli {
 namespace {
 
-constexpr const char* kCommand = "bezel surface";
+constexpr const char* kSurfaceCommand = "bezel surface";
 
 struct SurfaceArgs {
     std::string patch_file;            // --patch
@@ -37,9 +37,9 @@ struct SurfaceArgs {
     CLI::App* cmd = nullptr;
 };
 
-enum class Format { Png, Obj, Stl, StlAscii };
+enum class SurfaceFormat { Png, Obj, Stl, StlAscii };
 
-Expected<Format> pick_format(const SurfaceArgs& args) {
+Expected<SurfaceFormat> pick_format(const SurfaceArgs& args) {
     std::string name = args.format;
     if (name.empty() && !args.output_file.empty() && args.output_file != "-") {
         std::string ext = std::filesystem::path(args.output_file).extension().string();
@@ -52,10 +52,10 @@ Expected<Format> pick_format(const SurfaceArgs& args) {
             return Error{args.output_file + ": cannot tell the output format from the extension '" +
                          ext + "' (use .png, .obj or .stl, or give -O)"};
     }
-    if (name.empty() || name == "png") return Format::Png;
-    if (name == "obj") return Format::Obj;
-    if (name == "stl") return Format::Stl;
-    return Format::StlAscii;  // CLI11 checked the name
+    if (name.empty() || name == "png") return SurfaceFormat::Png;
+    if (name == "obj") return SurfaceFormat::Obj;
+    if (name == "stl") return SurfaceFormat::Stl;
+    return SurfaceFormat::StlAscii;  // CLI11 checked the name
 }
 
 // The control nets' bounding box: centre and half-diagonal (the surfaces lie inside it).
@@ -107,22 +107,22 @@ Expected<Camera> make_camera(const SurfaceArgs& args, const std::vector<Patch>& 
 
 int run_surface(const SurfaceArgs& args) {
     auto format = pick_format(args);
-    if (!format) return fail_usage(format.error().message, kCommand);
+    if (!format) return fail_usage(format.error().message, kSurfaceCommand);
     auto size = parse_size(args.size);
-    if (!size) return fail_usage(size.error().message, kCommand);
+    if (!size) return fail_usage(size.error().message, kSurfaceCommand);
     std::optional<SurfaceBasis> basis;
     if (!args.basis.empty())
         basis = args.basis == "hermite" ? SurfaceBasis::Hermite
                 : args.basis == "bspline" ? SurfaceBasis::BSpline : SurfaceBasis::Bezier;
     if (args.cmd->count("--target") > 0 && args.cmd->count("--eye") == 0)
-        return fail_usage("--target needs --eye", kCommand);
+        return fail_usage("--target needs --eye", kSurfaceCommand);
 
     auto patches = read_surface_file(args.patch_file, basis);
     if (!patches) return fail_runtime(patches.error().message);
     auto camera = make_camera(args, *patches);
-    if (!camera) return fail_usage(camera.error().message, kCommand);
+    if (!camera) return fail_usage(camera.error().message, kSurfaceCommand);
 
-    const bool picture = *format == Format::Png;
+    const bool picture = *format == SurfaceFormat::Png;
     const bool wire = args.mode == "wire";
     Vec3 centre;
     double radius;
@@ -139,15 +139,15 @@ int run_surface(const SurfaceArgs& args) {
     if (!picture) {
         auto mesh = tessellate(*patches, tess);
         if (!mesh) return fail_runtime(args.patch_file + ": " + mesh.error().message);
-        document = *format == Format::Obj   ? to_obj(*mesh)
-                   : *format == Format::Stl ? to_stl_binary(*mesh)
+        document = *format == SurfaceFormat::Obj   ? to_obj(*mesh)
+                   : *format == SurfaceFormat::Stl ? to_stl_binary(*mesh)
                                             : to_stl_ascii(*mesh);
     } else {
         auto view = View::fit(*camera, size->first, size->second, *patches,
                               0.04 * std::min(size->first, size->second));
-        if (!view) return fail_usage(view.error().message, kCommand);
+        if (!view) return fail_usage(view.error().message, kSurfaceCommand);
         auto background = parse_color(args.background);
-        if (!background) return fail_usage("--background: " + background.error().message, kCommand);
+        if (!background) return fail_usage("--background: " + background.error().message, kSurfaceCommand);
         Expected<Image> image = Error{""};
         if (wire) {
             WireStyle style;
@@ -156,7 +156,7 @@ int run_surface(const SurfaceArgs& args) {
             style.background = *background;
             if (!args.foreground.empty()) {
                 auto fg = parse_color(args.foreground);
-                if (!fg) return fail_usage("--foreground: " + fg.error().message, kCommand);
+                if (!fg) return fail_usage("--foreground: " + fg.error().message, kSurfaceCommand);
                 style.color = *fg;
             }
             image = render_wireframe(*patches, *view, style);
@@ -168,7 +168,7 @@ int run_surface(const SurfaceArgs& args) {
             style.background = *background;
             if (!args.foreground.empty()) {
                 auto fg = parse_color(args.foreground);
-                if (!fg) return fail_usage("--foreground: " + fg.error().message, kCommand);
+                if (!fg) return fail_usage("--foreground: " + fg.error().message, kSurfaceCommand);
                 style.color = *fg;
             }
             image = render_solid(*mesh, *view, style);

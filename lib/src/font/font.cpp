@@ -21,15 +21,16 @@
 
 namespace bezel {
 
+using font_detail::format_number;
 using font_detail::ft_error_text;
 
-namespace {
-
-std::string format_number(double v) {
+std::string font_detail::format_number(double v) {
     char buf[40];
     std::snprintf(buf, sizeof buf, "%g", v);
     return buf;
 }
+
+namespace {
 
 // Checks the file before FreeType sees it: FreeType reports a missing file and a directory
 // alike as "cannot open resource".

@@ -39,6 +39,9 @@ struct FreeTypeRenderCache {
     std::vector<std::remove_pointer_t<decltype(FT_Outline::contours)>> contours;
     int outline_flags = 0;
 };
+
+// A number in an error message ("%g": 6 significant digits, no trailing zeros).
+std::string format_number(double v);
 }  // namespace font_detail
 
 struct Font::Impl {

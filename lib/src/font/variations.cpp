@@ -14,6 +14,8 @@
 
 namespace bezel {
 
+using font_detail::format_number;
+
 namespace {
 
 // FT_Get_MM_Var's result, freed with FT_Done_MM_Var when this goes out of scope.
@@ -42,12 +44,6 @@ std::string tag_string(FT_ULong tag) {
 }
 
 double from_fixed(FT_Fixed v) { return static_cast<double>(v) / 65536.0; }
-
-std::string format_number(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
 
 }  // namespace
 

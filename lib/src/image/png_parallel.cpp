@@ -40,7 +40,8 @@
 
 namespace bezel {
 
-namespace {
+// Named (not anonymous): PngGrayStream::Impl, which has external linkage, holds these.
+namespace png_detail {
 
 constexpr int kLevel = 1;  // igzip's levels are 0..3; see above
 
@@ -101,6 +102,13 @@ public:
 private:
     std::vector<std::uint8_t> level_buf_, raw_;
 };
+
+}  // namespace png_detail
+
+using png_detail::Band;
+using png_detail::Deflater;
+
+namespace {
 
 void put32(std::vector<std::uint8_t>& out, std::uint32_t v) {
     for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<std::uint8_t>(v >> shift));

@@ -14,7 +14,7 @@ namespace {
 // Most segments one iso-curve is cut into.
 constexpr int kMaxIsoSegments = 1024;
 
-Vec3 casteljau(const Vec3 (&p)[4], double t) {
+Vec3 cubic_point(const Vec3 (&p)[4], double t) {
     Vec3 a = p[0] + (p[1] - p[0]) * t, b = p[1] + (p[2] - p[1]) * t, c = p[2] + (p[3] - p[2]) * t;
     Vec3 ab = a + (b - a) * t, bc = b + (c - b) * t;
     return ab + (bc - ab) * t;
@@ -40,7 +40,7 @@ void add_iso_curve(const Vec3 (&c)[4], const View& view, double tol_px, Path& pa
     }
     bool pen_down = false;
     for (int k = 0; k <= n; ++k) {
-        Vec3 w = casteljau(c, static_cast<double>(k) / n);
+        Vec3 w = cubic_point(c, static_cast<double>(k) / n);
         if (!view.in_front(w)) {
             pen_down = false;
             continue;
@@ -76,8 +76,8 @@ Expected<Image> render_wireframe(const std::vector<Patch>& patches, const View& 
             Vec3 along_t[4], along_s[4];
             for (int j = 0; j < 4; ++j) {
                 const Vec3 col[4] = {b.g[0][j], b.g[1][j], b.g[2][j], b.g[3][j]};
-                along_t[j] = casteljau(col, u);
-                along_s[j] = casteljau(b.g[j], u);
+                along_t[j] = cubic_point(col, u);
+                along_s[j] = cubic_point(b.g[j], u);
             }
             add_iso_curve(along_t, view, style.flatten_tolerance_px, lines);
             add_iso_curve(along_s, view, style.flatten_tolerance_px, lines);
