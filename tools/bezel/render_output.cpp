@@ -74,9 +74,10 @@ Expected<std::string> render_gray_page(TextRenderer& renderer, std::string_view 
         if (auto drawn = renderer.render_gray(text, options, page, {}); !drawn) return drawn.error();
         return bytes_of(encode_pgm(page.view()));
     }
-    // zlib is most of `bezel render`'s time on a page of text, so the PNG's bands are deflated
-    // by workers on the other cores (at least one) while this thread draws the lines below
-    // them, then by all of them. Declared after `page`: destroyed (its workers joined) first.
+    // Deflating is the largest part of `bezel render`'s time on a page of text, so the PNG's
+    // bands are deflated by workers on the other cores (at least one) while this thread draws
+    // the lines below them, then by all of them. Declared after `page`: destroyed (its workers
+    // joined) first.
     const int workers = static_cast<int>(std::max(2u, std::thread::hardware_concurrency()) - 1);
     std::optional<PngGrayStream> png;
     auto drawn = renderer.render_gray(text, options, page, [&](int rows) {
