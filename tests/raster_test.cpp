@@ -613,7 +613,7 @@ TEST(RasterKernels, SimdSweepsMatchScalarOnRandomRows) {
     for (int trial = 0; trial < 3000; ++trial) {
         const int n = 1 + static_cast<int>(rng() % 200);
         std::vector<float> row(static_cast<std::size_t>(row_cells(n)), 0.0f);
-        std::vector<std::uint8_t> flags(static_cast<std::size_t>(row_blocks(n)), 0);
+        std::vector<std::uint8_t> flags(static_cast<std::size_t>(row_flag_bytes(n)), 0);
         for (int b = 0; b < row_blocks(n); ++b) {
             if (rng() % 3 == 0) {
                 flags[b] = 1;
@@ -668,7 +668,7 @@ TEST(RasterKernels, DenseBandSweepsMatchScalarRowSweeps) {
             std::vector<float> sf(static_cast<std::size_t>(n) * rows);
             for (int r = 0; r < rows; ++r) {
                 std::vector<float> a(band.begin() + r * stride, band.begin() + (r + 1) * stride);
-                std::vector<std::uint8_t> fl(static_cast<std::size_t>(row_blocks(n)), 0);
+                std::vector<std::uint8_t> fl(static_cast<std::size_t>(row_flag_bytes(n)), 0);
                 scalar_kernels().f32[rule](a.data(), fl.data(), n, sf.data() + r * n);
                 a.assign(band.begin() + r * stride, band.begin() + (r + 1) * stride);
                 scalar_kernels().u8[rule](a.data(), fl.data(), n, s8.data() + r * n);

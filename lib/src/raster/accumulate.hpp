@@ -30,7 +30,7 @@ struct Band {
     float* acc;
     std::uint8_t* flags;
     std::ptrdiff_t stride;       // floats per row, row_cells(width)
-    std::ptrdiff_t flag_stride;  // bytes per row, row_blocks(width)
+    std::ptrdiff_t flag_stride;  // bytes per row, row_flag_bytes(width)
     int width, rows;
 };
 
@@ -93,34 +93,83 @@ inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb,
     if constexpr (kMark) mark_cells(frow, i0, i1 + 1);
 }
 
+// One in-row piece that spans at most two columns (|xb − xa| ≤ 1), drawn without a branch:
+// the common piece of every steep edge and of nearly every segment at small sizes, where a
+// branch on "does it cross a column border" is mispredicted about as often as not.
+// With lo ≤ hi its x ends, i = ⌊lo⌋ and X = i + 1, the part [lo, xm], xm = min(hi, X), lies in
+// column i and the part [xm, hi] in column i + 1 (empty unless the piece crosses X). Their
+// vertical extents are dy₁ (given) and dy₀ = dy − dy₁, and each adds as the one-column case of
+// draw_row_piece with its own mean offset m₀ = (lo + xm)/2 − i, m₁ = (xm + hi)/2 − X:
+//   acc[i] += dy₀(1 − m₀),  acc[i+1] += dy₀·m₀ + dy₁(1 − m₁),  acc[i+2] += dy₁·m₁.
+// The result is continuous in dy₁, so rounding in it moves coverage by O(hi − lo) only.
+// Writes cells i..i+2 ≤ width + 2 < stride (row_cells keeps three guard cells).
+template <bool kMark>
+inline void add_narrow_piece(float* row, std::uint8_t* frow, int i, double lo, double xm,
+                             double hi, double dy, double dy1) {
+    const double X = static_cast<double>(i + 1);
+    const double dy0 = dy - dy1;
+    const double r0 = dy0 * (0.5 * (lo + xm) - (X - 1.0));
+    const double r1 = dy1 * (0.5 * (xm + hi) - X);
+    row[i] += static_cast<float>(dy0 - r0);
+    row[i + 1] += static_cast<float>(r0 + (dy1 - r1));
+    row[i + 2] += static_cast<float>(r1);
+    if constexpr (kMark) {
+        frow[i >> kBlockShift] = 1;
+        frow[(i + 2) >> kBlockShift] = 1;
+    }
+}
+
+// A narrow piece of an edge whose |dy/dx| is `inv_slope` (finite; a vertical edge passes a huge
+// value, as hi − xm is then exactly 0): dy₁ = ±min((hi − xm)·|dy/dx|, |dy|), the min keeping it
+// within dy where rounding makes the product overshoot.
+template <bool kMark = true>
+inline void draw_narrow_piece(float* row, std::uint8_t* frow, double xa, double xb, double dy,
+                              double inv_slope) {
+    const double lo = std::min(xa, xb), hi = std::max(xa, xb);
+    const int i = static_cast<int>(lo);  // floor: lo > −1 (see draw_line)
+    const double xm = std::min(hi, static_cast<double>(i + 1));
+    const double dy1 = std::copysign(std::min((hi - xm) * inv_slope, std::fabs(dy)), dy);
+    add_narrow_piece<kMark>(row, frow, i, lo, xm, hi, dy, dy1);
+}
+
+// |dy/dx| for draw_narrow_piece, finite for a vertical edge.
+inline double inverse_slope(double adx, double ady) { return ady / std::max(adx, 1e-300); }
+
 // Draws the edge (x0, y0) → (x1, y1) into the band.
-// Precondition: 0 ≤ x ≤ width and 0 ≤ y ≤ rows for both ends (the caller clips).
+// Precondition: 0 ≤ x ≤ width and 0 ≤ y ≤ rows for both ends (the caller clips); the direct
+// route also passes coordinates in (−1, 0), which truncation puts in column / row 0.
+//
+// Three shapes, by what one row's piece can span:
+//   one row, |dx| ≤ 1   a single narrow piece (small sizes: most segments);
+//   steep, |dx| ≤ |dy|  each row's piece spans at most two columns: narrow pieces, x taken
+//                       fresh from the end point at each row border (no drift); an edge that
+//                       stays inside one column (stems) takes a cheaper two-cell loop;
+//   shallow             the general row piece, which walks the columns.
 template <bool kMark = true>
 inline void draw_line(const Band& band, double x0, double y0, double x1, double y1) {
     if (y0 == y1) return;  // horizontal edges carry no cover (and y = rows has no row)
-    int j = static_cast<int>(y0);  // floor, y ≥ 0
-    if (j == static_cast<int>(y1)) {
-        // Inside one row (most edges of small glyphs): no ordering, no division.
-        draw_row_piece<kMark>(band.acc + j * band.stride, band.flags + j * band.flag_stride, x0,
-                              x1, y1 - y0);
-        return;
-    }
     double dir = 1.0;
     if (y0 > y1) {
         std::swap(x0, x1);
         std::swap(y0, y1);
         dir = -1.0;
-        j = static_cast<int>(y0);
     }
+    int j = static_cast<int>(y0);  // floor (or 0 for y0 in (−1, 0))
+    // Last row the edge reaches: ⌈y1⌉ − 1, and never above row j.
+    int jl = static_cast<int>(y1);
+    if (static_cast<double>(jl) == y1) --jl;
+    jl = std::max(jl, j);
     float* row = band.acc + j * band.stride;
     std::uint8_t* frow = band.flags + j * band.flag_stride;
-    if (y1 <= static_cast<double>(j + 1)) {  // ends on the row's lower border
-        draw_row_piece<kMark>(row, frow, x0, x1, dir * (y1 - y0));
+    const double dx = x1 - x0, ady = y1 - y0, adx = std::fabs(dx);
+    if (j == jl) {  // inside one row: no division beyond the slope
+        if (adx <= 1.0)
+            draw_narrow_piece<kMark>(row, frow, x0, x1, dir * ady, inverse_slope(adx, ady));
+        else
+            draw_row_piece<kMark>(row, frow, x0, x1, dir * ady);
         return;
     }
-    int jend = static_cast<int>(y1);
-    if (jend < y1) ++jend;  // ceil
-    const double dxdy = (x1 - x0) / (y1 - y0);
+    const double dxdy = dx / ady;
     const double xlo = std::min(x0, x1), xhi = std::max(x0, x1);
     const int ic = static_cast<int>(xlo);
     if (xhi <= static_cast<double>(ic + 1)) {
@@ -143,7 +192,7 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
             ++j;
             cell += band.stride;
             frow += band.flag_stride;
-            if (j + 1 >= jend) break;
+            if (j >= jl) break;
             const double xb = xa + dxdy;  // full row: dy = dir, m = mean of xa, xb
             right = dir * (0.5 * (xa + xb) - ic);
             dy = dir;
@@ -163,7 +212,20 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
         return;
     }
     double ya = y0, xa = x0;
-    for (; j < jend; ++j, row += band.stride, frow += band.flag_stride) {
+    if (adx <= ady) {
+        // Steep: a row's piece moves |dxdy| ≤ 1 in x. Interior rows are full (|dy| = 1).
+        const double inv_slope = inverse_slope(adx, ady);
+        for (; j < jl; ++j, row += band.stride, frow += band.flag_stride) {
+            const double yb = static_cast<double>(j + 1);
+            const double xb = x0 + (yb - y0) * dxdy;
+            draw_narrow_piece<kMark>(row, frow, xa, xb, dir * (yb - ya), inv_slope);
+            ya = yb;
+            xa = xb;
+        }
+        draw_narrow_piece<kMark>(row, frow, xa, x1, dir * (y1 - ya), inv_slope);
+        return;
+    }
+    for (; j <= jl; ++j, row += band.stride, frow += band.flag_stride) {
         const double yb = std::min(y1, static_cast<double>(j + 1));
         // Clamped to the edge's own x range: rounding must not push an index past the band.
         const double xb = yb == y1 ? x1 : std::clamp(x0 + (yb - y0) * dxdy, xlo, xhi);

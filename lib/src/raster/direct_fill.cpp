@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "raster/accumulate.hpp"
+#include "raster/draw_batch.hpp"
 #include "raster/fill_common.hpp"
 #include "raster/render_flatten.hpp"
 
@@ -20,34 +21,56 @@ namespace {
 // Below 0 needs no clamp: draw_line's int conversion truncates toward zero, so such a point
 // lands in column / row 0 as if it were at 0 (within its excursion). Above the band it must be
 // clamped: x to the width (exact, accumulate.hpp), y to the rows (moves it by < tol).
+//
+// Segments are queued and drawn a SegmentBatch at a time (draw_batch.hpp) rather than one
+// draw_line call per vertex: a call in the middle of the flattening loop makes the caller spill
+// its forward differences (every vector register is caller-saved), the two loops are each
+// tighter alone, and the batch draws two segments per instruction.
 template <bool kMark>
 struct DrawSink {
-    const Band& band;
-    double w, h;
-    Point first{}, cur{};
+    explicit DrawSink(const Band& b)
+        : band(b), wh(_mm_set_pd(static_cast<double>(b.rows), static_cast<double>(b.width))) {}
 
-    Point clamp(Point p) const { return {std::min(p.x, w), std::min(p.y, h)}; }
-    void move(Point p) { first = cur = clamp(p); }
-    void line(Point p) {
-        const Point q = clamp(p);
-        draw_line<kMark>(band, cur.x, cur.y, q.x, q.y);
+    const Band& band;
+    __m128d wh;  // (width, rows)
+    __m128d first = _mm_setzero_pd(), cur = _mm_setzero_pd();
+    int queued = 0;
+    SegmentBatch batch;
+
+    // min(x, width), min(y, rows); the points are finite (fill_path_direct checked).
+    __m128d clamp(V2 p) const { return _mm_min_pd(p.v, wh); }
+    void push(__m128d a, __m128d b) {
+        batch.seg[queued] = {a, b};
+        if (++queued == SegmentBatch::kSize) flush();
+    }
+    void flush() {
+        if (queued & 1)  // pad to a pair with a horizontal segment, which draws nothing
+            batch.seg[queued] = {_mm_setzero_pd(), _mm_setzero_pd()};
+        draw_batch<kMark>(band, batch, queued);
+        queued = 0;
+    }
+    void move(V2 p) { first = cur = clamp(p); }
+    void line(V2 p) {
+        const __m128d q = clamp(p);
+        push(cur, q);
         cur = q;
     }
     void close() {
-        draw_line<kMark>(band, cur.x, cur.y, first.x, first.y);
+        push(cur, first);
         cur = first;
     }
 };
 
 template <bool kMark>
 void draw_path(const Path& path, const Point* local, double tol, const Band& band) {
-    DrawSink<kMark> sink{band, static_cast<double>(band.width), static_cast<double>(band.rows)};
+    DrawSink<kMark> sink(band);
     walk_balanced(path.verbs(), tol,
-                  [local](std::size_t i, Point& p) {
-                      p = local[i];
+                  [local](std::size_t i, V2& p) {
+                      p = V2::of(local[i]);
                       return true;
                   },
                   sink);
+    sink.flush();
 }
 
 }  // namespace
@@ -91,7 +114,7 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     // Edge budget, the cheap bound of path_fill.cpp: a cubic in a control box of diagonal D needs
     // at most ⌈√(1.5·D/tol)⌉ steps. Within it no curve can pass kMaxSegmentsPerCurve, so the
     // walk below never stops halfway.
-    const double per_curve = std::ceil(std::sqrt(1.5 * std::hypot(x1 - x0, y1 - y0) / tol));
+    const double per_curve = std::ceil(std::sqrt(1.5 * std::sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0)) / tol));
     if (!(per_curve + 1.0 <= static_cast<double>(kMaxSegmentsPerCurve)) ||
         static_cast<double>(path.verbs().size()) * (per_curve + 1.0) > static_cast<double>(kMaxEdges))
         return false;
@@ -101,7 +124,7 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     pixel_range(y0, y1, 0.0, H, by0, by1);
     if (bx0 >= bx1 || by0 >= by1) return false;  // no area: the general route clears
     const int box_w = bx1 - bx0, box_h = by1 - by0;
-    const std::ptrdiff_t stride = row_cells(box_w), flag_stride = row_blocks(box_w);
+    const std::ptrdiff_t stride = row_cells(box_w), flag_stride = row_flag_bytes(box_w);
     const std::size_t cells = static_cast<std::size_t>(box_h) * static_cast<std::size_t>(stride);
     if (cells > kMaxBandCells) return false;  // several bands: the general route
     const std::size_t flags = static_cast<std::size_t>(box_h) * static_cast<std::size_t>(flag_stride);
@@ -116,7 +139,7 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     for (std::size_t i = 0; i < src.size(); ++i) tp[i] = m * src[i] - shift;
     const Band band{scratch.acc.data(), scratch.flags.data(), stride, flag_stride, box_w, box_h};
     const SweepKernels& kernels = best_kernels();
-    if (flag_stride <= kDenseBlocks) {
+    if (row_blocks(box_w) <= kDenseBlocks) {
         draw_path<false>(path, tp.data(), tol, band);
         sweep_dense(kernels, rule, band.acc, stride, box_w, box_h, target.row(by0) + bx0,
                     target.stride);

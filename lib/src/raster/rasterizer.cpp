@@ -133,7 +133,7 @@ Status Rasterizer::fill_impl(const Polylines& lines, FillRule rule, const View& 
 
     const int box_w = bx1 - bx0, box_h = by1 - by0;
     const std::ptrdiff_t stride = rd::row_cells(box_w);
-    const std::ptrdiff_t flag_stride = rd::row_blocks(box_w);
+    const std::ptrdiff_t flag_stride = rd::row_flag_bytes(box_w);
     const int band_rows =
         std::max(1, std::min(box_h, static_cast<int>(kMaxBandCells / static_cast<std::size_t>(stride))));
     const std::size_t cells = static_cast<std::size_t>(band_rows) * static_cast<std::size_t>(stride);

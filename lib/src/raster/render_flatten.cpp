@@ -13,12 +13,13 @@ struct PolylineSink {
     std::size_t contour_start = 0;
     Point first{};
 
-    void move(Point p) {
+    void move(V2 v) {
+        const Point p = v.point();
         contour_start = out.points.size();
         out.points.push_back(p);
         first = p;
     }
-    void line(Point p) { out.points.push_back(p); }
+    void line(V2 v) { out.points.push_back(v.point()); }
     void close() {
         if (out.points.size() - contour_start < 2) {
             out.points.resize(contour_start);  // a lone move encloses nothing
@@ -35,8 +36,9 @@ bool flatten_balanced(const Path& path, const Affine& m, double tol, Polylines& 
     const std::vector<Point>& pts = path.points();
     PolylineSink sink{out, out.points.size(), {}};
     return walk_balanced(path.verbs(), tol,
-                         [&](std::size_t i, Point& p) {
-                             p = m * pts[i];
+                         [&](std::size_t i, V2& v) {
+                             const Point p = m * pts[i];
+                             v = V2::of(p);
                              // Also false for NaN.
                              return std::fabs(p.x) <= kMaxFlattenCoordinatePx &&
                                     std::fabs(p.y) <= kMaxFlattenCoordinatePx;

@@ -22,14 +22,14 @@ void scalar_sweep(float* acc, std::uint8_t* flags, int n, Out* out) {
         }
     }
     std::fill(acc, acc + row_cells(n), 0.0f);
-    std::fill(flags, flags + row_blocks(n), std::uint8_t{0});
+    std::fill(flags, flags + row_flag_bytes(n), std::uint8_t{0});
 }
 
 // The dense reference: each row as above, with a scratch flag row (ignored, then cleared).
 template <FillRule R, typename Out>
 void scalar_dense(float* acc, std::ptrdiff_t stride, int n, int rows, Out* out,
                   std::ptrdiff_t out_stride) {
-    std::uint8_t flags[kMaxBitmapDim / kBlock + 1];
+    std::uint8_t flags[(kMaxBitmapDim / kBlock + 1 + 7) & ~7];
     for (int r = 0; r < rows; ++r) scalar_sweep<R>(acc + r * stride, flags, n, out + r * out_stride);
 }
 

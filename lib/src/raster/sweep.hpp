@@ -14,7 +14,8 @@
 // block, so the loop is bound by throughput rather than by the carry's latency).
 //
 // Contract of every kernel, for a row of n output pixels:
-//   acc   has row_cells(n) floats, zero except in marked blocks; flags has row_blocks(n) bytes.
+//   acc   has row_cells(n) floats, zero except in marked blocks; flags has row_flag_bytes(n)
+//         bytes, 0 or 1.
 //   On return acc and flags are all zero again, so the band needs no memset before the next
 //   fill, and out[0, n) holds the coverage.
 #pragma once
@@ -29,10 +30,14 @@ namespace bezel::raster_detail {
 inline constexpr int kBlockShift = 4;
 inline constexpr int kBlock = 1 << kBlockShift;  // pixels per block (two AVX2 vectors)
 
-// Cells a row of n pixels needs: n, two guard cells (a piece at x = n writes acc[n], acc[n+1]),
+// Cells a row of n pixels needs: n, three guard cells (a narrow piece at x = n writes acc[n] to
+// acc[n+2], accumulate.hpp),
 // rounded up to whole blocks so kernels never read past the row.
-inline int row_cells(int n) { return (n + 2 + kBlock - 1) & ~(kBlock - 1); }
+inline int row_cells(int n) { return (n + 3 + kBlock - 1) & ~(kBlock - 1); }
 inline int row_blocks(int n) { return row_cells(n) >> kBlockShift; }
+// Flag bytes a row of n pixels has: one per block, rounded up to whole 8-byte words so the sweep
+// can test eight flags with one load; the padding flags are never set.
+inline int row_flag_bytes(int n) { return (row_blocks(n) + 7) & ~7; }
 
 using SweepU8Fn = void (*)(float* acc, std::uint8_t* flags, int n, std::uint8_t* out);
 using SweepF32Fn = void (*)(float* acc, std::uint8_t* flags, int n, float* out);

@@ -46,38 +46,35 @@ inline void fill_run(float* out, int count, float a, FillRule rule) {
     std::fill(out, out + count, coverage_of(a, rule));
 }
 
-// Index of the first marked block at or after b (nb when none). Eight flags at a time: a
-// glyph row at large sizes is mostly unmarked. Flags are 0 or 1, so the first nonzero byte of
-// a little-endian word is at its lowest set bit / 8.
-inline int next_marked(const std::uint8_t* flags, int b, int nb) {
-    while (b + 8 <= nb) {
-        std::uint64_t word;
-        std::memcpy(&word, flags + b, 8);
-        if (word != 0) return b + (__builtin_ctzll(word) >> 3);
-        b += 8;
-    }
-    while (b < nb && !flags[b]) ++b;
-    return b;
-}
-
+// The sparse row: marked blocks are summed, the runs between them filled. The marked blocks are
+// found eight flags at a time (a little-endian word of 0/1 bytes has a set bit at 8k for each
+// marked block k, so ctz / 8 is the next one and word & (word − 1) drops it), which costs no
+// branch per unmarked block: at large sizes a row is mostly runs. Guard blocks past the row's
+// last pixel hold deltas of pieces at x ≈ n but no pixels: they are only cleared.
 template <typename Block, FillRule R, typename Out>
 inline void sweep_blocks(float* acc, std::uint8_t* flags, int n, Out* out) {
-    const int nb = row_blocks(n);
+    const int words = row_flag_bytes(n) >> 3;
     typename Block::Carry carry = Block::zero();
-    int b = 0;
-    while (b < nb) {
-        if (!flags[b]) {
-            const int e = next_marked(flags, b, nb);
-            const int x0 = b << kBlockShift, x1 = std::min(e << kBlockShift, n);
-            if (x1 > x0) fill_run(out + x0, x1 - x0, Block::first(carry), R);
-            b = e;
-            continue;
-        }
-        flags[b] = 0;
-        const int x0 = b << kBlockShift;
-        Block::template sum<R>(acc + x0, carry, out + x0, std::clamp(n - x0, 0, kBlock));
-        ++b;
+    int x = 0;  // pixels [0, x) are written
+    for (int w = 0; w < words; ++w) {
+        std::uint64_t word;
+        std::memcpy(&word, flags + 8 * w, 8);
+        if (word == 0) continue;
+        std::memset(flags + 8 * w, 0, 8);
+        do {
+            const int b = 8 * w + (__builtin_ctzll(word) >> 3);
+            word &= word - 1;
+            const int x0 = b << kBlockShift;
+            if (x0 >= n) {
+                std::memset(acc + x0, 0, sizeof(float) * kBlock);
+                continue;
+            }
+            if (x0 > x) fill_run(out + x, x0 - x, Block::first(carry), R);
+            Block::template sum<R>(acc + x0, carry, out + x0, std::min(n - x0, kBlock));
+            x = x0 + kBlock;
+        } while (word != 0);
     }
+    if (x < n) fill_run(out + x, n - x, Block::first(carry), R);
 }
 
 // The dense band: every block of every row summed (no flags); the guard cells past the last
