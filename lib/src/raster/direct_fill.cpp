@@ -62,15 +62,38 @@ struct DrawSink {
 };
 
 template <bool kMark>
-void draw_path(const Path& path, const Point* local, double tol, const Band& band) {
+// `points` are the transformed control points, `shift` the band's top-left pixel.
+void draw_path(const Path& path, const Point* points, V2 shift, double tol, const Band& band) {
     DrawSink<kMark> sink(band);
     walk_balanced(path.verbs(), tol,
-                  [local](std::size_t i, V2& p) {
-                      p = V2::of(local[i]);
+                  [points, shift](std::size_t i, V2& p) {
+                      p = V2::of(points[i]) - shift;
                       return true;
                   },
                   sink);
     sink.flush();
+}
+
+// Maps `src` by `m` into `out` (when kStore) and returns the box of the results (lo, hi) and
+// the sum of their products with 0, which is 0 unless one is NaN or infinite. Packed,
+// (x, y) = (a, b)·x + (c, d)·y + (e, f): the operations of Affine's product, in its order.
+template <bool kStore>
+void transform_points(const std::vector<Point>& src, const Affine& m, Point* out, __m128d& lo,
+                      __m128d& hi, __m128d& poison) {
+    const __m128d ab = _mm_set_pd(m.b, m.a), cd = _mm_set_pd(m.d, m.c), ef = _mm_set_pd(m.f, m.e);
+    lo = _mm_set1_pd(HUGE_VAL);
+    hi = _mm_set1_pd(-HUGE_VAL);
+    poison = _mm_setzero_pd();
+    for (std::size_t i = 0; i < src.size(); ++i) {
+        const __m128d q = _mm_loadu_pd(&src[i].x);
+        const __m128d t = _mm_add_pd(_mm_add_pd(_mm_mul_pd(ab, _mm_unpacklo_pd(q, q)),
+                                                _mm_mul_pd(cd, _mm_unpackhi_pd(q, q))),
+                                     ef);
+        if constexpr (kStore) _mm_storeu_pd(&out[i].x, t);
+        lo = _mm_min_pd(lo, t);
+        hi = _mm_max_pd(hi, t);
+        poison = _mm_add_pd(poison, _mm_mul_pd(t, _mm_setzero_pd()));
+    }
 }
 
 }  // namespace
@@ -85,30 +108,20 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     const std::vector<Point>& src = path.points();
     if (src.empty()) return false;
 
-    // The transformed control points' box; x·0 is 0 unless x is NaN or infinite. Nothing is
-    // stored until the route is known to apply, so a refused path allocates nothing. For an
-    // axis-aligned transform (glyphs: scale and offset) the box is the image of the source box:
-    // x ↦ a·x + e is monotone in floating point too, so the extreme points map to the extremes.
-    double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL, poison = 0.0;
-    const bool axis_aligned = m.b == 0.0 && m.c == 0.0;
-    for (const Point& q : src) {
-        const Point p = axis_aligned ? q : m * q;
-        x0 = std::min(x0, p.x);
-        x1 = std::max(x1, p.x);
-        y0 = std::min(y0, p.y);
-        y1 = std::max(y1, p.y);
-        poison += p.x * 0.0 + p.y * 0.0;
-    }
-    if (axis_aligned) {
-        const double xa = m.a * x0 + m.e, xb = m.a * x1 + m.e;
-        const double ya = m.d * y0 + m.f, yb = m.d * y1 + m.f;
-        x0 = std::min(xa, xb);
-        x1 = std::max(xa, xb);
-        y0 = std::min(ya, yb);
-        y1 = std::max(ya, yb);
-        poison += x0 * 0.0 + x1 * 0.0 + y0 * 0.0 + y1 * 0.0;
-    }
-    if (poison != 0.0) return false;
+    // The transformed control points and their box, in one pass that also stores them when the
+    // scratch already has room; a first, larger path is measured before anything is allocated
+    // for it (a refused path allocates nothing).
+    std::vector<Point>& tp = scratch.points;
+    const bool stored = tp.capacity() >= src.size();
+    if (stored) tp.resize(src.size());
+    __m128d lo, hi, poison;
+    if (stored)
+        transform_points<true>(src, m, tp.data(), lo, hi, poison);
+    else
+        transform_points<false>(src, m, nullptr, lo, hi, poison);
+    if (_mm_movemask_pd(_mm_cmpneq_pd(poison, _mm_setzero_pd())) != 0) return false;
+    const double x0 = _mm_cvtsd_f64(lo), y0 = _mm_cvtsd_f64(_mm_unpackhi_pd(lo, lo));
+    const double x1 = _mm_cvtsd_f64(hi), y1 = _mm_cvtsd_f64(_mm_unpackhi_pd(hi, hi));
     if (!(x0 >= 0.0 && y0 >= 0.0 && x1 <= W && y1 <= H)) return false;  // needs clipping
 
     // Edge budget, the cheap bound of path_fill.cpp: a cubic in a control box of diagonal D needs
@@ -131,21 +144,21 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     if (scratch.acc.size() < cells) scratch.acc.resize(cells, 0.0f);
     if (scratch.flags.size() < flags) scratch.flags.resize(flags, 0);
 
+    if (!stored) {
+        tp.resize(src.size());
+        transform_points<true>(src, m, tp.data(), lo, hi, poison);
+    }
     clear_outside_box(target, bx0, bx1, by0, by1);
-    // Band-relative control points (the same product as above, so the same box).
-    std::vector<Point>& tp = scratch.points;
-    tp.resize(src.size());
-    const Vec2 shift{static_cast<double>(bx0), static_cast<double>(by0)};
-    for (std::size_t i = 0; i < src.size(); ++i) tp[i] = m * src[i] - shift;
+    const V2 shift{_mm_set_pd(static_cast<double>(by0), static_cast<double>(bx0))};
     const Band band{scratch.acc.data(), scratch.flags.data(), stride, flag_stride, box_w, box_h};
     const SweepKernels& kernels = best_kernels();
     if (row_blocks(box_w) <= kDenseBlocks) {
-        draw_path<false>(path, tp.data(), tol, band);
+        draw_path<false>(path, tp.data(), shift, tol, band);
         sweep_dense(kernels, rule, band.acc, stride, box_w, box_h, target.row(by0) + bx0,
                     target.stride);
         return true;
     }
-    draw_path<true>(path, tp.data(), tol, band);
+    draw_path<true>(path, tp.data(), shift, tol, band);
     for (int r = 0; r < box_h; ++r)
         sweep_row(kernels, rule, band.acc + r * stride, band.flags + r * flag_stride, box_w,
                   target.row(by0 + r) + bx0);

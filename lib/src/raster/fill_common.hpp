@@ -28,15 +28,15 @@ inline void clear_pixels(T* p, int n) {
 // Writes 0 to every pixel of `target` outside the box [bx0, bx1) × [by0, by1).
 template <typename View>
 void clear_outside_box(const View& target, int bx0, int bx1, int by0, int by1) {
-    for (int y = 0; y < target.height; ++y) {
-        auto* row = target.row(y);
-        if (y < by0 || y >= by1) {
-            clear_pixels(row, target.width);
-        } else {
+    for (int y = 0; y < by0; ++y) clear_pixels(target.row(y), target.width);
+    if (bx0 > 0 || bx1 < target.width) {
+        for (int y = by0; y < by1; ++y) {
+            auto* row = target.row(y);
             clear_pixels(row, bx0);
             clear_pixels(row + bx1, target.width - bx1);
         }
     }
+    for (int y = std::max(by1, 0); y < target.height; ++y) clear_pixels(target.row(y), target.width);
 }
 
 // The sweep kernel for an output pixel type.
