@@ -64,11 +64,20 @@ inline double len2(V2 a) {
 }
 
 // Steps for a curve whose largest second difference has squared length dd2: Wang's
-// n = ⌈√(d(d−1)·M / (8·tol))⌉, with k = d(d−1)/(8·tol) precomputed. Returns 0 past the cap.
+// n = ⌈√(d(d−1)·M / (8·tol))⌉ = ⌈s⌉, s = √(√dd2 · k), with k = d(d−1)/(8·tol) precomputed.
+// Returns 0 past the cap (and for NaN).
+// Glyph curves nearly all need n ≤ 8, and there ⌈s⌉ is counted without a square root: s > i
+// exactly when s⁴ = dd2·k² > i⁴, so n = 1 + #{i = 1..7 : dd2·k² > i⁴}. That is a few
+// independent compares instead of two dependent square roots at the head of every curve.
 inline int wang_steps(double dd2, double k) {
+    const double t = dd2 * (k * k);
+    if (t <= 4096.0) {  // s ≤ 8
+        return 1 + (t > 1.0) + (t > 16.0) + (t > 81.0) + (t > 256.0) + (t > 625.0) +
+               (t > 1296.0) + (t > 2401.0);
+    }
     const double n = std::ceil(std::sqrt(std::sqrt(dd2) * k));
     if (!(n <= static_cast<double>(kMaxSegmentsPerCurve))) return 0;
-    return n < 1.0 ? 1 : static_cast<int>(n);
+    return static_cast<int>(n);
 }
 
 // h = 1/n and its powers for the forward differences. Small n (nearly every curve of a glyph)

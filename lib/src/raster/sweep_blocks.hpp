@@ -47,27 +47,27 @@ inline void fill_run(float* out, int count, float a, FillRule rule) {
 }
 
 // The run [x, end) of a row of n pixels that the sweep writes left to right: everything right
-// of `end` is written again afterwards, so the run may spill over into it. Bytes: eight
-// unconditional 16-byte stores cover any run up to 128 pixels (nearly every run at glyph
+// of `end` is written again afterwards, so the run may spill over into it. Bytes: four
+// unconditional 32-byte stores cover any run up to 128 pixels (nearly every run at glyph
 // sizes) without a loop whose varying trip count the branch predictor would miss at each run;
 // longer runs loop on. Near the row's end, where spilling would pass pixel n, the exact fill.
 // Floats: the exact fill.
 inline void fill_run_ahead(std::uint8_t* row, int x, int end, int n, float a, FillRule rule) {
-    constexpr int kAhead = 8 * 16;
+    constexpr int kChunk = 2 * kBlock, kAhead = 4 * kChunk;
     if (x + kAhead > n) {
         fill_run(row + x, end - x, a, rule);
         return;
     }
-    std::uint8_t v[16];
+    std::uint8_t v[kChunk];
     std::memset(v, coverage_u8(a, rule), sizeof v);
     std::uint8_t* out = row + x;
-    for (int k = 0; k < kAhead; k += 16) std::memcpy(out + k, v, 16);
-    for (int p = x + kAhead; p < end; p += 16) {
-        if (p + 16 > n) {
+    for (int k = 0; k < kAhead; k += kChunk) std::memcpy(out + k, v, kChunk);
+    for (int p = x + kAhead; p < end; p += kChunk) {
+        if (p + kChunk > n) {
             fill_run(row + p, end - p, a, rule);
             return;
         }
-        std::memcpy(row + p, v, 16);
+        std::memcpy(row + p, v, kChunk);
     }
 }
 inline void fill_run_ahead(float* row, int x, int end, int, float a, FillRule rule) {
