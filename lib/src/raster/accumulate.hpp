@@ -120,16 +120,17 @@ inline void add_narrow_piece(float* row, std::uint8_t* frow, int i, double lo, d
 }
 
 // A narrow piece of an edge whose |dy/dx| is `inv_slope` (finite; a vertical edge passes a huge
-// value, as hi − xm is then exactly 0): dy₁ = ±min((hi − xm)·|dy/dx|, |dy|), the min keeping it
-// within dy where rounding makes the product overshoot.
+// value, as hi − xm is then exactly 0), of vertical extent ady ≥ 0 in direction dir = ±1:
+// dy₁ = dir·min((hi − xm)·|dy/dx|, ady), the min keeping it within dy where rounding makes the
+// product overshoot.
 template <bool kMark = true>
-inline void draw_narrow_piece(float* row, std::uint8_t* frow, double xa, double xb, double dy,
-                              double inv_slope) {
+inline void draw_narrow_piece(float* row, std::uint8_t* frow, double xa, double xb, double ady,
+                              double dir, double inv_slope) {
     const double lo = std::min(xa, xb), hi = std::max(xa, xb);
     const int i = static_cast<int>(lo);  // floor: lo > −1 (see draw_line)
     const double xm = std::min(hi, static_cast<double>(i + 1));
-    const double dy1 = std::copysign(std::min((hi - xm) * inv_slope, std::fabs(dy)), dy);
-    add_narrow_piece<kMark>(row, frow, i, lo, xm, hi, dy, dy1);
+    const double dy1 = dir * std::min((hi - xm) * inv_slope, ady);
+    add_narrow_piece<kMark>(row, frow, i, lo, xm, hi, dir * ady, dy1);
 }
 
 // |dy/dx| for draw_narrow_piece, finite for a vertical edge.
@@ -164,7 +165,7 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
     const double dx = x1 - x0, ady = y1 - y0, adx = std::fabs(dx);
     if (j == jl) {  // inside one row: no division beyond the slope
         if (adx <= 1.0)
-            draw_narrow_piece<kMark>(row, frow, x0, x1, dir * ady, inverse_slope(adx, ady));
+            draw_narrow_piece<kMark>(row, frow, x0, x1, ady, dir, inverse_slope(adx, ady));
         else
             draw_row_piece<kMark>(row, frow, x0, x1, dir * ady);
         return;
@@ -218,11 +219,11 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
         for (; j < jl; ++j, row += band.stride, frow += band.flag_stride) {
             const double yb = static_cast<double>(j + 1);
             const double xb = x0 + (yb - y0) * dxdy;
-            draw_narrow_piece<kMark>(row, frow, xa, xb, dir * (yb - ya), inv_slope);
+            draw_narrow_piece<kMark>(row, frow, xa, xb, yb - ya, dir, inv_slope);
             ya = yb;
             xa = xb;
         }
-        draw_narrow_piece<kMark>(row, frow, xa, x1, dir * (y1 - ya), inv_slope);
+        draw_narrow_piece<kMark>(row, frow, xa, x1, y1 - ya, dir, inv_slope);
         return;
     }
     for (; j <= jl; ++j, row += band.stride, frow += band.flag_stride) {
