@@ -61,8 +61,8 @@ struct DrawSink {
     }
 };
 
-template <bool kMark>
 // `points` are the transformed control points, `shift` the band's top-left pixel.
+template <bool kMark>
 void draw_path(const Path& path, const Point* points, V2 shift, double tol, const Band& band) {
     DrawSink<kMark> sink(band);
     walk_balanced(path.verbs(), tol,
@@ -127,7 +127,8 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     // Edge budget, the cheap bound of path_fill.cpp: a cubic in a control box of diagonal D needs
     // at most ⌈√(1.5·D/tol)⌉ steps. Within it no curve can pass kMaxSegmentsPerCurve, so the
     // walk below never stops halfway.
-    const double per_curve = std::ceil(std::sqrt(1.5 * std::sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0)) / tol));
+    const double diagonal = std::sqrt((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0));
+    const double per_curve = std::ceil(std::sqrt(1.5 * diagonal / tol));
     if (!(per_curve + 1.0 <= static_cast<double>(kMaxSegmentsPerCurve)) ||
         static_cast<double>(path.verbs().size()) * (per_curve + 1.0) > static_cast<double>(kMaxEdges))
         return false;

@@ -43,6 +43,7 @@ bool flatten_balanced(const Path& path, const Affine& m, double tol, Polylines& 
 // IEEE operation the scalar formula names, done for both coordinates by one instruction, so the
 // polyline is what the scalar code computes and the two routes share it bit for bit.
 
+static_assert(sizeof(Point) == 2 * sizeof(double), "Point is loaded as a packed (x, y) pair");
 struct V2 {
     __m128d v;  // (x, y)
     static V2 of(Point p) { return {_mm_loadu_pd(&p.x)}; }
