@@ -1,11 +1,10 @@
 // Private: drawing a batch of segments two at a time (SSE2, every x86-64 CPU).
 //
-// At small sizes almost every segment lies inside one pixel row and spans at most two columns
-// (DejaVu Sans at 12 px: 67 % of the segments, at 24 px 59 %; most of the others cross one row
-// border, and a few are stems), and
-// such a segment is three cell updates of draw_line's narrow piece (accumulate.hpp). Scalar,
-// that is about a hundred instructions a segment, most of them the prologue that decides which
-// case applies and orients the edge. Here the decision and the arithmetic are done for two
+// At small sizes most segments lie inside one pixel row and span at most two columns (DejaVu
+// Sans at 12 px: 67 % of them, at 24 px 59 %; most of the others cross one row border, a few
+// are stems), and such a segment is three cell updates of draw_line's narrow piece
+// (accumulate.hpp). Scalar, that is about a hundred instructions a segment, most of them the
+// prologue that decides which case applies and orients the edge. Here the decision and the arithmetic are done for two
 // segments per instruction in double precision (the same operations as add_narrow_piece, so the
 // same sums up to the order of float additions), and only the cell updates are per segment.
 // Segments that are not narrow one-row pieces go to draw_line.
