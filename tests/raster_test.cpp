@@ -444,6 +444,24 @@ TEST(RasterClipping, FarCoordinatesMatchReference) {
     }
 }
 
+TEST(RasterClipping, SubnormalEdgeClippedAtTheTopMatchesReference) {
+    // fuzz_raster finding: an edge from y = −2⁻¹⁰⁷⁴ to 2⁻¹⁰⁷⁴ clipped at y = 0 took its x from
+    // t = 0/0 (both ends halved to 0), a NaN that reached an int conversion. Its cover is
+    // nothing; the triangle's other edges give the rest.
+    const double tiny = 4.9406564584124654e-324;
+    Rasterizer r;
+    for (int w : {1, 3}) {
+        Polylines p = polygon({{{-2.9149873104633546e-322, -tiny}, {tiny, tiny}, {0.75, 0.9}}});
+        FloatImage f(w, 1);
+        ASSERT_TRUE(r.fill(p, FillRule::NonZero, f.view()).ok());
+        std::vector<double> ref = reference_coverage(p, FillRule::NonZero, w, 1, {});
+        for (std::size_t i = 0; i < ref.size(); ++i) {
+            ASSERT_TRUE(std::isfinite(f.px[i]));
+            EXPECT_NEAR(f.px[i], ref[i], 1e-6) << i;
+        }
+    }
+}
+
 // --- Errors and limits -----------------------------------------------------------------------
 
 TEST(RasterErrors, NanOrInfinityIsAnErrorAndLeavesTargetUntouched) {

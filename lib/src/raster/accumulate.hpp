@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <utility>
 
 #include "raster/sweep.hpp"
@@ -247,9 +248,15 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
 // overflow.
 void clip_and_draw_line(const Band& band, double x0, double y0, double x1, double y1);
 
-// Parameter t at which a + t·(b − a) = v, for a ≠ b. Halved operands: b − a may overflow a
-// double when a and b are huge with opposite signs; b/2 − a/2 cannot.
+// Parameter t at which a + t·(b − a) = v, for a ≠ b and v between them. Plainly when b − a is
+// finite (the difference of two distinct doubles is never 0, so v − a over it is in [0, 1]);
+// with halved operands only where b − a overflows (a and b huge with opposite signs, where
+// b/2 − a/2 cannot). Halving always would lose subnormals: an edge from y = −2⁻¹⁰⁷⁴ to 2⁻¹⁰⁷⁴
+// halves both to 0 and clipped at y = 0 gave t = 0/0 (fuzz_raster finding, regression
+// tests/fuzz/regressions/fuzz_raster/subnormal-edge-clipped-at-zero).
 inline double param_at(double a, double b, double v) {
+    const double d = b - a;
+    if (std::fabs(d) <= std::numeric_limits<double>::max()) return (v - a) / d;
     return (0.5 * v - 0.5 * a) / (0.5 * b - 0.5 * a);
 }
 
