@@ -94,6 +94,8 @@ std::vector<BadInput> catalogue() {
         {"unknown option", {"outline", kDejaVu, "--char", "g", "--bogus"}, 2, "--bogus"},
         {"unknown command", {"outlines", kDejaVu}, 2, "outlines"},
         {"stray empty argument (hung CLI11 2.1 before)", {"smooth", "--method", "natural", "--points", "0,0 1,1 2,0", "", "-o", "out.svg"}, 2, "unexpected argument ''"},
+        {"empty argument after the stroke path (hung CLI11 2.1 before)", {"stroke", "M0 0 L1 1", "", "--width", "2"}, 2, "unexpected argument ''"},
+        {"stroke with neither path nor path file", {"stroke", "--width", "2"}, 2, "PATH or --path-file"},
         {"unknown output format", {"outline", kDejaVu, "--char", "g", "-o", "out.xyz"}, 2, "out.xyz"},
         {"output into a missing directory", {"outline", kDejaVu, "--char", "g", "-o", "no-such-dir/out.svg"}, 1, "no-such-dir/out.svg"},
         // (Permissions do not stop root, which CI may be: /proc refuses new files to everyone.)

@@ -43,19 +43,12 @@ int run_cli(int argc, char** argv) {
     // Every command gets a last, hidden positional that takes whatever arguments are left over,
     // reported below as a usage error. Besides naming the stray argument, it keeps an EMPTY
     // argument away from CLI11 2.1's subcommand lookup, where "" matches an option group (an
-    // unnamed subcommand) and parsing loops forever (a fuzz_cli finding: `bezel smooth "" --x`).
-    // (Not where an option group holds a positional, as `bezel stroke PATH` does: the parent's
-    // positionals are filled first and would take it; that positional takes "" itself.)
+    // unnamed subcommand) and parsing loops forever (fuzz_cli findings: `bezel smooth "" --x`,
+    // `bezel stroke x "" -l`). So no command keeps a positional inside an option group: CLI11
+    // fills the command's own positionals first, and this catcher would take it.
     std::vector<std::vector<std::string>> strays(commands.size());
-    const auto group_positional = [](CLI::App* cmd) {
-        for (CLI::App* group : cmd->get_subcommands([](CLI::App* a) { return a->get_name().empty(); }))
-            for (const CLI::Option* o : group->get_options())
-                if (o->get_positional()) return true;
-        return false;
-    };
     for (std::size_t i = 0; i < commands.size(); ++i)
-        if (!group_positional(commands[i].app))
-            commands[i].app->add_option("bezel-stray-arguments", strays[i])->group("");
+        commands[i].app->add_option("bezel-stray-arguments", strays[i])->group("");
 
     // CLI11 would report a mistyped command only as "A subcommand is required"; name it instead.
     if (argc > 1 && argv[1][0] != '-') {

@@ -141,6 +141,8 @@ Expected<std::string> read_path_file(const std::string& file) {
 }
 
 int run_stroke(const StrokeArgs& args) {
+    if (args.cmd->count("PATH") + args.cmd->count("--path-file") != 1)
+        return fail_usage("the path: give PATH or --path-file (exactly one)", kStrokeCommand);
     auto format = pick_format(args);
     if (!format) return fail_usage(format.error().message, kStrokeCommand);
     auto style = style_of(args);
@@ -198,11 +200,16 @@ Command add_stroke_command(CLI::App& app) {
         "  bezel stroke 'M10,10 C40,80 80,-20 110,50' --width 8 --join round --cap round\n"
         "  bezel stroke 'M0,0 L50,0 L50,50 Z' --width 4 --dash 6,3 -o dashed.svg\n"
         "  bezel stroke --path-file glyph.path --width 3 --join round -o glyph.png");
-    CLI::Option_group* input = cmd->add_option_group("input", "The path, exactly one of:");
-    input->add_option("PATH", args->path, "SVG path data")->type_name("PATH");
-    input->add_option("--path-file", args->path_file, "A file ('-': stdin) holding SVG path data")
-        ->type_name("FILE");
-    input->require_option(1);
+    // PATH or --path-file, exactly one (checked in run_stroke). Not an option group: CLI11 2.1
+    // fills a group's positional after the command's own, so the hidden stray-argument
+    // positional every command gets (main.cpp) would take PATH, and without that catcher an
+    // empty argument after PATH sends CLI11's subcommand lookup into a loop (a fuzz_cli
+    // finding: `bezel stroke x "" -l`).
+    CLI::Option* path_opt =
+        cmd->add_option("PATH", args->path, "SVG path data (or --path-file)")->type_name("PATH");
+    cmd->add_option("--path-file", args->path_file, "A file ('-': stdin) holding SVG path data")
+        ->type_name("FILE")
+        ->excludes(path_opt);
     cmd->add_option("--width", args->width, "Stroke width, path units (default 1)")
         ->type_name("W");
     cmd->add_option("--join", args->join, "miter (default), round or bevel")
