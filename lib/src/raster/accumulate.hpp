@@ -94,9 +94,9 @@ inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb,
     if constexpr (kMark) mark_cells(frow, i0, i1 + 1);
 }
 
-// One in-row piece that spans at most two columns (|xb − xa| ≤ 1), drawn without a branch:
-// the common piece of every steep edge and of nearly every segment at small sizes, where a
-// branch on "does it cross a column border" is mispredicted about as often as not.
+// One in-row piece that spans at most two columns (|xb − xa| ≤ 1), drawn without a branch on
+// whether it crosses the column border: the common piece of every steep edge and of most
+// segments at small sizes.
 // With lo ≤ hi its x ends, i = ⌊lo⌋ and X = i + 1, the part [lo, xm], xm = min(hi, X), lies in
 // column i and the part [xm, hi] in column i + 1 (empty unless the piece crosses X). Their
 // vertical extents are dy₁ (given) and dy₀ = dy − dy₁, and each adds as the one-column case of
@@ -104,6 +104,18 @@ inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb,
 //   acc[i] += dy₀(1 − m₀),  acc[i+1] += dy₀·m₀ + dy₁(1 − m₁),  acc[i+2] += dy₁·m₁.
 // The result is continuous in dy₁, so rounding in it moves coverage by O(hi − lo) only.
 // Writes cells i..i+2 ≤ width + 2 < stride (row_cells keeps three guard cells).
+// Adds c0, c1, c2 to cells i, i + 1, i + 2 of a row (marking their blocks when kMark).
+template <bool kMark>
+inline void add_three_cells(float* row, std::uint8_t* frow, int i, float c0, float c1, float c2) {
+    row[i] += c0;
+    row[i + 1] += c1;
+    row[i + 2] += c2;
+    if constexpr (kMark) {
+        frow[i >> kBlockShift] = 1;
+        frow[(i + 2) >> kBlockShift] = 1;
+    }
+}
+
 template <bool kMark>
 inline void add_narrow_piece(float* row, std::uint8_t* frow, int i, double lo, double xm,
                              double hi, double dy, double dy1) {
@@ -111,13 +123,8 @@ inline void add_narrow_piece(float* row, std::uint8_t* frow, int i, double lo, d
     const double dy0 = dy - dy1;
     const double r0 = dy0 * (0.5 * (lo + xm) - (X - 1.0));
     const double r1 = dy1 * (0.5 * (xm + hi) - X);
-    row[i] += static_cast<float>(dy0 - r0);
-    row[i + 1] += static_cast<float>(r0 + (dy1 - r1));
-    row[i + 2] += static_cast<float>(r1);
-    if constexpr (kMark) {
-        frow[i >> kBlockShift] = 1;
-        frow[(i + 2) >> kBlockShift] = 1;
-    }
+    add_three_cells<kMark>(row, frow, i, static_cast<float>(dy0 - r0),
+                           static_cast<float>(r0 + (dy1 - r1)), static_cast<float>(r1));
 }
 
 // A narrow piece of an edge whose |dy/dx| is `inv_slope` (finite; a vertical edge passes a huge

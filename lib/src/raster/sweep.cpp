@@ -29,7 +29,7 @@ void scalar_sweep(float* acc, std::uint8_t* flags, int n, Out* out) {
 template <FillRule R, typename Out>
 void scalar_dense(float* acc, std::ptrdiff_t stride, int n, int rows, Out* out,
                   std::ptrdiff_t out_stride) {
-    std::uint8_t flags[(kMaxBitmapDim / kBlock + 1 + 7) & ~7];
+    std::uint8_t flags[row_flag_bytes(kMaxBitmapDim)];
     for (int r = 0; r < rows; ++r) scalar_sweep<R>(acc + r * stride, flags, n, out + r * out_stride);
 }
 

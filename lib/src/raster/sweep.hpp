@@ -31,13 +31,12 @@ inline constexpr int kBlockShift = 4;
 inline constexpr int kBlock = 1 << kBlockShift;  // pixels per block (two AVX2 vectors)
 
 // Cells a row of n pixels needs: n, three guard cells (a narrow piece at x = n writes acc[n] to
-// acc[n+2], accumulate.hpp),
-// rounded up to whole blocks so kernels never read past the row.
-inline int row_cells(int n) { return (n + 3 + kBlock - 1) & ~(kBlock - 1); }
-inline int row_blocks(int n) { return row_cells(n) >> kBlockShift; }
+// acc[n+2], accumulate.hpp), rounded up to whole blocks so kernels never read past the row.
+constexpr int row_cells(int n) { return (n + 3 + kBlock - 1) & ~(kBlock - 1); }
+constexpr int row_blocks(int n) { return row_cells(n) >> kBlockShift; }
 // Flag bytes a row of n pixels has: one per block, rounded up to whole 8-byte words so the sweep
 // can test eight flags with one load; the padding flags are never set.
-inline int row_flag_bytes(int n) { return (row_blocks(n) + 7) & ~7; }
+constexpr int row_flag_bytes(int n) { return (row_blocks(n) + 7) & ~7; }
 
 using SweepU8Fn = void (*)(float* acc, std::uint8_t* flags, int n, std::uint8_t* out);
 using SweepF32Fn = void (*)(float* acc, std::uint8_t* flags, int n, float* out);
