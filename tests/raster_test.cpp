@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "bezel/raster.hpp"
+#include "raster/fill_common.hpp"
 #include "raster/reference.hpp"
 #include "raster/render_flatten.hpp"
 #include "raster/sweep.hpp"
@@ -619,93 +620,154 @@ TEST(RasterTarget, ReusedRasterizerStopsGrowingAfterTheLargestFill) {
 
 // --- Sweep kernels: SIMD against scalar ---------------------------------------------------------
 
-TEST(RasterKernels, SimdSweepsMatchScalarOnRandomRows) {
-    // Rows with deltas in a random subset of blocks (flags mark exactly those, plus some
-    // spurious marks, which must be harmless): runs of unmarked blocks are filled with the
-    // running coverage, marked ones summed.
+// A group of `rows` rows of n cells (column-major, as sweep.hpp lays it out) on a 32-byte
+// aligned start, with deltas in a random subset of blocks; `flags` marks exactly those, plus
+// some spurious marks, which must be harmless.
+struct RandomGroup {
+    std::vector<float> storage;
+    std::vector<std::uint8_t> flags;
+    float* acc = nullptr;
+};
+RandomGroup random_group(std::mt19937& rng, int n, int rows) {
     using namespace raster_detail;
-    std::vector<const SweepKernels*> kernels = {&sse2_kernels()};
+    std::uniform_real_distribution<float> delta(-1.0f, 1.0f);
+    RandomGroup g;
+    g.storage.assign(static_cast<std::size_t>(group_cells(n)) + 8, 0.0f);
+    g.acc = band_cells(g.storage, static_cast<std::size_t>(group_cells(n)));
+    g.flags.assign(static_cast<std::size_t>(row_flag_bytes(n)), 0);
+    for (int b = 0; b < row_blocks(n); ++b) {
+        if (rng() % 3 == 0) {
+            g.flags[b] = 1;
+            for (int i = b * kBlock; i < (b + 1) * kBlock && i < n + 2; ++i)
+                for (int r = 0; r < rows; ++r)
+                    if (rng() % 2) g.acc[i * kGroupRows + r] = delta(rng) * 1.5f;
+        } else if (rng() % 8 == 0) {
+            g.flags[b] = 1;  // marked but empty
+        }
+    }
+    return g;
+}
+
+// An aligned copy of `cells` floats from `src` (vector copies move the alignment).
+struct AlignedCells {
+    std::vector<float> storage;
+    float* data;
+    AlignedCells(const float* src, std::size_t cells) : storage(cells + 8, 0.0f) {
+        data = raster_detail::band_cells(storage, cells);
+        std::copy(src, src + cells, data);
+    }
+};
+
+// The scalar reference for one row r of a group: its running sums, cell by cell.
+template <typename Out>
+std::vector<Out> reference_row(const float* acc, int n, int r, FillRule rule) {
+    using namespace raster_detail;
+    std::vector<Out> out(static_cast<std::size_t>(n));
+    float sum = 0.0f;
+    for (int i = 0; i < n; ++i) {
+        sum += acc[i * kGroupRows + r];
+        if constexpr (sizeof(Out) == 1)
+            out[i] = coverage_u8(sum, rule);
+        else
+            out[i] = coverage_of(sum, rule);
+    }
+    return out;
+}
+
+TEST(RasterKernels, GroupSweepsMatchRowByRowSumsOnRandomGroups) {
+    // Every kernel (scalar included) against the running sums of each row taken one by one:
+    // runs of unmarked blocks are filled with each row's running coverage, marked ones summed,
+    // partial groups and rows written only where they exist, acc and flags left all zero.
+    using namespace raster_detail;
+    std::vector<const SweepKernels*> kernels = {&scalar_kernels(), &sse2_kernels()};
     if (avx2_kernels()) kernels.push_back(avx2_kernels());
     std::mt19937 rng(1010);
-    std::uniform_real_distribution<float> delta(-1.0f, 1.0f);
-    for (int trial = 0; trial < 3000; ++trial) {
+    for (int trial = 0; trial < 1500; ++trial) {
         const int n = 1 + static_cast<int>(rng() % 200);
-        std::vector<float> row(static_cast<std::size_t>(row_cells(n)), 0.0f);
-        std::vector<std::uint8_t> flags(static_cast<std::size_t>(row_flag_bytes(n)), 0);
-        for (int b = 0; b < row_blocks(n); ++b) {
-            if (rng() % 3 == 0) {
-                flags[b] = 1;
-                for (int i = b * kBlock; i < (b + 1) * kBlock && i < n + 2; ++i)
-                    if (rng() % 2) row[i] = delta(rng) * 1.5f;
-            } else if (rng() % 8 == 0) {
-                flags[b] = 1;  // marked but empty
-            }
-        }
+        const int rows = 1 + static_cast<int>(rng() % kGroupRows);
+        const int out_stride = n + static_cast<int>(rng() % 5);
+        RandomGroup g = random_group(rng, n, rows);
         for (int rule = 0; rule < 2; ++rule) {
-            std::vector<float> a = row, sf(n), kf(n);
-            std::vector<std::uint8_t> fl = flags, s8(n), k8(n);
-            scalar_kernels().f32[rule](a.data(), fl.data(), n, sf.data());
-            a = row;
-            fl = flags;
-            scalar_kernels().u8[rule](a.data(), fl.data(), n, s8.data());
+            const FillRule fr = static_cast<FillRule>(rule);
             for (const SweepKernels* k : kernels) {
-                std::vector<float> b = row;
-                fl = flags;
-                k->f32[rule](b.data(), fl.data(), n, kf.data());
-                for (float v : b) ASSERT_EQ(v, 0.0f) << k->name << ": acc not re-zeroed";
+                const std::size_t cells = static_cast<std::size_t>(group_cells(n));
+                AlignedCells b(g.acc, cells);
+                std::vector<std::uint8_t> fl = g.flags;
+                std::vector<float> kf(static_cast<std::size_t>(out_stride) * kGroupRows, -1.0f);
+                k->f32[rule](b.data, fl.data(), n, rows, kf.data(), out_stride);
+                for (float v : b.storage) ASSERT_EQ(v, 0.0f) << k->name << ": acc not re-zeroed";
                 for (std::uint8_t f : fl) ASSERT_EQ(f, 0) << k->name << ": flags not cleared";
-                b = row;
-                fl = flags;
-                k->u8[rule](b.data(), fl.data(), n, k8.data());
-                for (int i = 0; i < n; ++i) {
-                    ASSERT_NEAR(kf[i], sf[i], 1e-5) << k->name << " n " << n << " i " << i;
-                    ASSERT_LE(std::abs(int(k8[i]) - int(s8[i])), 1) << k->name;
+                AlignedCells c(g.acc, cells);
+                fl = g.flags;
+                std::vector<std::uint8_t> k8(static_cast<std::size_t>(out_stride) * kGroupRows, 7);
+                k->u8[rule](c.data, fl.data(), n, rows, k8.data(), out_stride);
+                for (float v : c.storage) ASSERT_EQ(v, 0.0f) << k->name << ": acc not re-zeroed";
+                for (int r = 0; r < kGroupRows; ++r) {
+                    if (r >= rows) {  // rows past the group's end are not written
+                        for (int i = 0; i < out_stride; ++i)
+                            ASSERT_EQ(k8[r * out_stride + i], 7) << k->name << " row " << r;
+                        continue;
+                    }
+                    const std::vector<float> sf = reference_row<float>(g.acc, n, r, fr);
+                    const std::vector<std::uint8_t> s8 = reference_row<std::uint8_t>(g.acc, n, r, fr);
+                    for (int i = 0; i < n; ++i) {
+                        ASSERT_NEAR(kf[r * out_stride + i], sf[i], 1e-5)
+                            << k->name << " n " << n << " row " << r << " i " << i;
+                        ASSERT_LE(std::abs(int(k8[r * out_stride + i]) - int(s8[i])), 1)
+                            << k->name << " n " << n << " row " << r << " i " << i;
+                    }
+                    for (int i = n; i < out_stride; ++i)  // nothing written between rows
+                        ASSERT_EQ(k8[r * out_stride + i], 7) << k->name;
                 }
             }
         }
     }
 }
 
-TEST(RasterKernels, DenseBandSweepsMatchScalarRowSweeps) {
-    // The dense kernels sum every block of every row in one call (no flags) and write rows
-    // out_stride apart; each row must equal the scalar row sweep, and acc must end all zero,
-    // guard cells included.
+TEST(RasterKernels, DenseBandSweepsMatchRowByRowSums) {
+    // The dense kernels sum every block of every group of a band in one call (no flags) and
+    // write rows out_stride apart; each row must equal its running sums, and acc must end all
+    // zero, guard cells included.
     using namespace raster_detail;
     std::vector<const SweepKernels*> kernels = {&scalar_kernels(), &sse2_kernels()};
     if (avx2_kernels()) kernels.push_back(avx2_kernels());
     std::mt19937 rng(1111);
     std::uniform_real_distribution<float> delta(-1.0f, 1.0f);
     for (int trial = 0; trial < 500; ++trial) {
-        const int n = 1 + static_cast<int>(rng() % 170), rows = 1 + static_cast<int>(rng() % 9);
-        const int stride = row_cells(n), out_stride = n + static_cast<int>(rng() % 5);
-        std::vector<float> band(static_cast<std::size_t>(stride) * rows, 0.0f);
-        for (float& v : band)
-            if (rng() % 3 == 0) v = delta(rng) * 1.5f;
+        const int n = 1 + static_cast<int>(rng() % 170), rows = 1 + static_cast<int>(rng() % 20);
+        const std::ptrdiff_t stride = group_cells(n);
+        const int out_stride = n + static_cast<int>(rng() % 5);
+        const std::size_t cells = static_cast<std::size_t>(row_groups(rows) * stride);
+        std::vector<float> storage(cells + 8, 0.0f);
+        float* band = band_cells(storage, cells);
+        for (int y = 0; y < rows; ++y)
+            for (int i = 0; i < row_cells(n); ++i)
+                if (rng() % 3 == 0)
+                    band[(y / kGroupRows) * stride + i * kGroupRows + y % kGroupRows] =
+                        delta(rng) * 1.5f;
         for (int rule = 0; rule < 2; ++rule) {
-            std::vector<std::uint8_t> s8(static_cast<std::size_t>(n) * rows);
-            std::vector<float> sf(static_cast<std::size_t>(n) * rows);
-            for (int r = 0; r < rows; ++r) {
-                std::vector<float> a(band.begin() + r * stride, band.begin() + (r + 1) * stride);
-                std::vector<std::uint8_t> fl(static_cast<std::size_t>(row_flag_bytes(n)), 0);
-                scalar_kernels().f32[rule](a.data(), fl.data(), n, sf.data() + r * n);
-                a.assign(band.begin() + r * stride, band.begin() + (r + 1) * stride);
-                scalar_kernels().u8[rule](a.data(), fl.data(), n, s8.data() + r * n);
-            }
+            const FillRule fr = static_cast<FillRule>(rule);
             for (const SweepKernels* k : kernels) {
-                std::vector<float> b = band, kf(static_cast<std::size_t>(out_stride) * rows, -1.0f);
-                k->dense_f32[rule](b.data(), stride, n, rows, kf.data(), out_stride);
-                for (float v : b) ASSERT_EQ(v, 0.0f) << k->name << ": acc not re-zeroed";
-                b = band;
+                AlignedCells b(band, cells);
+                std::vector<float> kf(static_cast<std::size_t>(out_stride) * rows, -1.0f);
+                k->dense_f32[rule](b.data, stride, n, rows, kf.data(), out_stride);
+                for (float v : b.storage) ASSERT_EQ(v, 0.0f) << k->name << ": acc not re-zeroed";
+                AlignedCells c(band, cells);
                 std::vector<std::uint8_t> k8(static_cast<std::size_t>(out_stride) * rows, 7);
-                k->dense_u8[rule](b.data(), stride, n, rows, k8.data(), out_stride);
-                for (int r = 0; r < rows; ++r) {
+                k->dense_u8[rule](c.data, stride, n, rows, k8.data(), out_stride);
+                for (float v : c.storage) ASSERT_EQ(v, 0.0f) << k->name << ": acc not re-zeroed";
+                for (int y = 0; y < rows; ++y) {
+                    const float* group = band + (y / kGroupRows) * stride;
+                    const std::vector<float> sf = reference_row<float>(group, n, y % kGroupRows, fr);
+                    const std::vector<std::uint8_t> s8 =
+                        reference_row<std::uint8_t>(group, n, y % kGroupRows, fr);
                     for (int i = 0; i < n; ++i) {
-                        ASSERT_NEAR(kf[r * out_stride + i], sf[r * n + i], 1e-5) << k->name;
-                        ASSERT_LE(std::abs(int(k8[r * out_stride + i]) - int(s8[r * n + i])), 1)
-                            << k->name << " n " << n << " row " << r << " i " << i;
+                        ASSERT_NEAR(kf[y * out_stride + i], sf[i], 1e-5) << k->name;
+                        ASSERT_LE(std::abs(int(k8[y * out_stride + i]) - int(s8[i])), 1)
+                            << k->name << " n " << n << " row " << y << " i " << i;
                     }
                     for (int i = n; i < out_stride; ++i)  // nothing written between rows
-                        ASSERT_EQ(k8[r * out_stride + i], 7) << k->name;
+                        ASSERT_EQ(k8[y * out_stride + i], 7) << k->name;
                 }
             }
         }

@@ -1,8 +1,9 @@
 // Private: drawing line segments as signed-area deltas into a dense accumulation band.
 //
-// The band is `rows` rows of `stride` floats (stride = row_cells(width), see sweep.hpp), plus
-// one flag byte per block of kBlock cells that records "this block has deltas". After all edges
-// are drawn, the coverage of pixel (i, j) is the prefix sum acc[j][0] + … + acc[j][i].
+// The band is `rows` rows in groups of kGroupRows, column-major inside a group (sweep.hpp): cell
+// i of row j is row_of(band, j)[i · kGroupRows]. Each group has one flag byte per block of kBlock
+// columns that records "this block has deltas". After all edges are drawn, the coverage of pixel
+// (i, j) is the prefix sum of cells 0..i of row j.
 //
 // The maths (font-rs, after libart). Take one piece of an edge inside one pixel row, going down
 // by dy (signed: +dy downwards, −dy upwards — the winding direction) between x = xa and x = xb.
@@ -28,12 +29,21 @@
 namespace bezel::raster_detail {
 
 struct Band {
-    float* acc;
+    float* acc;                  // kBandAlign-aligned
     std::uint8_t* flags;
-    std::ptrdiff_t stride;       // floats per row, row_cells(width)
-    std::ptrdiff_t flag_stride;  // bytes per row, row_flag_bytes(width)
+    std::ptrdiff_t stride;       // floats per group, group_cells(width)
+    std::ptrdiff_t flag_stride;  // bytes per group, row_flag_bytes(width)
     int width, rows;
 };
+
+// Cell 0 of row j (cell i is at [i · kGroupRows]) and the flag row of j's group.
+inline float* row_of(const Band& band, int j) {
+    return band.acc + (j >> kGroupShift) * band.stride + (j & (kGroupRows - 1));
+}
+inline std::uint8_t* flags_of(const Band& band, int j) {
+    return band.flags + (j >> kGroupShift) * band.flag_stride;
+}
+inline constexpr int kCell = kGroupRows;  // floats from one cell of a row to the next
 
 // Marks the blocks holding cells i0..i1 (inclusive).
 inline void mark_cells(std::uint8_t* frow, int i0, int i1) {
@@ -63,8 +73,8 @@ inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb,
     if (i0 == i1) {
         // One column: m = mean offset inside the pixel.
         const double right = dy * (0.5 * (xa + xb) - i0);
-        row[i0] += static_cast<float>(dy - right);
-        row[i0 + 1] += static_cast<float>(right);
+        row[i0 * kCell] += static_cast<float>(dy - right);
+        row[(i0 + 1) * kCell] += static_cast<float>(right);
         if constexpr (kMark) {
             frow[i0 >> kBlockShift] = 1;
             frow[(i0 + 1) >> kBlockShift] = 1;
@@ -80,17 +90,17 @@ inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb,
     const double s = dy / (xb - xa);
     const double w0 = (i0 + 1) - xa;
     const double d0 = s * w0;
-    row[i0] += static_cast<float>(d0 * (0.5 * w0));
+    row[i0 * kCell] += static_cast<float>(d0 * (0.5 * w0));
     double carry = d0 * (1.0 - 0.5 * w0);  // pending delta for the next column
     const double half = 0.5 * s;
     for (int i = i0 + 1; i < i1; ++i) {
-        row[i] += static_cast<float>(carry + half);
+        row[i * kCell] += static_cast<float>(carry + half);
         carry = half;
     }
     const double w1 = xb - i1;
     const double d1 = s * w1;
-    row[i1] += static_cast<float>(carry + d1 * (1.0 - 0.5 * w1));
-    row[i1 + 1] += static_cast<float>(d1 * (0.5 * w1));
+    row[i1 * kCell] += static_cast<float>(carry + d1 * (1.0 - 0.5 * w1));
+    row[(i1 + 1) * kCell] += static_cast<float>(d1 * (0.5 * w1));
     if constexpr (kMark) mark_cells(frow, i0, i1 + 1);
 }
 
@@ -107,9 +117,10 @@ inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb,
 // Adds c0, c1, c2 to cells i, i + 1, i + 2 of a row (marking their blocks when kMark).
 template <bool kMark>
 inline void add_three_cells(float* row, std::uint8_t* frow, int i, float c0, float c1, float c2) {
-    row[i] += c0;
-    row[i + 1] += c1;
-    row[i + 2] += c2;
+    float* cell = row + i * kCell;
+    cell[0] += c0;
+    cell[kCell] += c1;
+    cell[2 * kCell] += c2;
     if constexpr (kMark) {
         frow[i >> kBlockShift] = 1;
         frow[(i + 2) >> kBlockShift] = 1;
@@ -168,8 +179,8 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
     int jl = static_cast<int>(y1);
     if (static_cast<double>(jl) == y1) --jl;
     jl = std::max(jl, j);
-    float* row = band.acc + j * band.stride;
-    std::uint8_t* frow = band.flags + j * band.flag_stride;
+    float* row = row_of(band, j);
+    std::uint8_t* frow = flags_of(band, j);
     const double dx = x1 - x0, ady = y1 - y0, adx = std::fabs(dx);
     if (j == jl) {  // inside one row: no division beyond the slope
         if (adx <= 1.0)
@@ -185,22 +196,21 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
         // The whole edge stays in column ic (stems, steep edges at large sizes): each row's piece
         // adds dy·(1 − m) and dy·m at ic, ic + 1 with m the piece's mean x − ic, and m moves by
         // dxdy per full row. Only the first and last rows are partial.
-        float* cell = row + ic;
         const double yb0 = static_cast<double>(j + 1);
         double xa = x0 + (yb0 - y0) * dxdy;  // x where the edge leaves row j
         double dy = dir * (yb0 - y0);
         double right = dy * (0.5 * (x0 + xa) - ic);
         const int b0 = ic >> kBlockShift, b1 = (ic + 1) >> kBlockShift;
         for (;;) {
+            float* cell = row_of(band, j) + ic * kCell;
             cell[0] += static_cast<float>(dy - right);
-            cell[1] += static_cast<float>(right);
+            cell[kCell] += static_cast<float>(right);
             if constexpr (kMark) {
-                frow[b0] = 1;
-                frow[b1] = 1;
+                std::uint8_t* f = flags_of(band, j);
+                f[b0] = 1;
+                f[b1] = 1;
             }
             ++j;
-            cell += band.stride;
-            frow += band.flag_stride;
             if (j >= jl) break;
             const double xb = xa + dxdy;  // full row: dy = dir, m = mean of xa, xb
             right = dir * (0.5 * (xa + xb) - ic);
@@ -212,11 +222,13 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
         xa = std::clamp(x0 + (ya - y0) * dxdy, xlo, xhi);
         dy = dir * (y1 - ya);
         right = dy * (0.5 * (xa + x1) - ic);
+        float* cell = row_of(band, j) + ic * kCell;
         cell[0] += static_cast<float>(dy - right);
-        cell[1] += static_cast<float>(right);
+        cell[kCell] += static_cast<float>(right);
         if constexpr (kMark) {
-            frow[b0] = 1;
-            frow[b1] = 1;
+            std::uint8_t* f = flags_of(band, j);
+            f[b0] = 1;
+            f[b1] = 1;
         }
         return;
     }
@@ -224,21 +236,23 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
     if (adx <= ady) {
         // Steep: a row's piece moves |dxdy| ≤ 1 in x. Interior rows are full (|dy| = 1).
         const double inv_slope = inverse_slope(adx, ady);
-        for (; j < jl; ++j, row += band.stride, frow += band.flag_stride) {
+        for (; j < jl; ++j) {
             const double yb = static_cast<double>(j + 1);
             const double xb = x0 + (yb - y0) * dxdy;
-            draw_narrow_piece<kMark>(row, frow, xa, xb, yb - ya, dir, inv_slope);
+            draw_narrow_piece<kMark>(row_of(band, j), flags_of(band, j), xa, xb, yb - ya, dir,
+                                     inv_slope);
             ya = yb;
             xa = xb;
         }
-        draw_narrow_piece<kMark>(row, frow, xa, x1, y1 - ya, dir, inv_slope);
+        draw_narrow_piece<kMark>(row_of(band, j), flags_of(band, j), xa, x1, y1 - ya, dir,
+                                 inv_slope);
         return;
     }
-    for (; j <= jl; ++j, row += band.stride, frow += band.flag_stride) {
+    for (; j <= jl; ++j) {
         const double yb = std::min(y1, static_cast<double>(j + 1));
         // Clamped to the edge's own x range: rounding must not push an index past the band.
         const double xb = yb == y1 ? x1 : std::clamp(x0 + (yb - y0) * dxdy, xlo, xhi);
-        draw_row_piece<kMark>(row, frow, xa, xb, dir * (yb - ya));
+        draw_row_piece<kMark>(row_of(band, j), flags_of(band, j), xa, xb, dir * (yb - ya));
         ya = yb;
         xa = xb;
     }

@@ -138,11 +138,12 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     pixel_range(y0, y1, 0.0, H, by0, by1);
     if (bx0 >= bx1 || by0 >= by1) return false;  // no area: the general route clears
     const int box_w = bx1 - bx0, box_h = by1 - by0;
-    const std::ptrdiff_t stride = row_cells(box_w), flag_stride = row_flag_bytes(box_w);
-    const std::size_t cells = static_cast<std::size_t>(box_h) * static_cast<std::size_t>(stride);
+    const std::ptrdiff_t stride = group_cells(box_w), flag_stride = row_flag_bytes(box_w);
+    const std::size_t groups = static_cast<std::size_t>(row_groups(box_h));
+    const std::size_t cells = groups * static_cast<std::size_t>(stride);
     if (cells > kMaxBandCells) return false;  // several bands: the general route
-    const std::size_t flags = static_cast<std::size_t>(box_h) * static_cast<std::size_t>(flag_stride);
-    if (scratch.acc.size() < cells) scratch.acc.resize(cells, 0.0f);
+    const std::size_t flags = groups * static_cast<std::size_t>(flag_stride);
+    float* const acc = band_cells(scratch.acc, cells);
     if (scratch.flags.size() < flags) scratch.flags.resize(flags, 0);
 
     if (!stored) {
@@ -151,18 +152,19 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     }
     clear_outside_box(target, bx0, bx1, by0, by1);
     const V2 shift{_mm_set_pd(static_cast<double>(by0), static_cast<double>(bx0))};
-    const Band band{scratch.acc.data(), scratch.flags.data(), stride, flag_stride, box_w, box_h};
+    const Band band{acc, scratch.flags.data(), stride, flag_stride, box_w, box_h};
     const SweepKernels& kernels = best_kernels();
     if (row_blocks(box_w) <= kDenseBlocks) {
         draw_path<false>(path, tp.data(), shift, tol, band);
-        sweep_dense(kernels, rule, band.acc, stride, box_w, box_h, target.row(by0) + bx0,
+        sweep_dense(kernels, rule, acc, stride, box_w, box_h, target.row(by0) + bx0,
                     target.stride);
         return true;
     }
     draw_path<true>(path, tp.data(), shift, tol, band);
-    for (int r = 0; r < box_h; ++r)
-        sweep_row(kernels, rule, band.acc + r * stride, band.flags + r * flag_stride, box_w,
-                  target.row(by0 + r) + bx0);
+    for (int y = 0; y < box_h; y += kGroupRows)
+        sweep_group(kernels, rule, acc + (y >> kGroupShift) * stride,
+                    band.flags + (y >> kGroupShift) * flag_stride, box_w,
+                    std::min(kGroupRows, box_h - y), target.row(by0 + y) + bx0, target.stride);
     return true;
 }
 

@@ -34,8 +34,7 @@ namespace batch_detail {
 
 template <bool kMark>
 inline void add_cells(const Band& band, int j, int i, float c0, float c1, float c2) {
-    add_three_cells<kMark>(band.acc + j * band.stride, band.flags + j * band.flag_stride, i, c0,
-                           c1, c2);
+    add_three_cells<kMark>(row_of(band, j), flags_of(band, j), i, c0, c1, c2);
 }
 
 template <bool kMark>

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 #include "bezel/raster.hpp"
 #include "raster/sweep.hpp"
@@ -39,14 +40,24 @@ void clear_outside_box(const View& target, int bx0, int bx1, int by0, int by1) {
     for (int y = std::max(by1, 0); y < target.height; ++y) clear_pixels(target.row(y), target.width);
 }
 
-// The sweep kernel for an output pixel type.
-inline void sweep_row(const SweepKernels& k, FillRule rule, float* acc, std::uint8_t* flags, int n,
-                      std::uint8_t* out) {
-    k.u8[static_cast<int>(rule)](acc, flags, n, out);
+// The band's floats in `v`, grown (with zeros) to hold `cells` from a kBandAlign-aligned start.
+// The sweep leaves them all zero, and growing keeps that, wherever the aligned start falls.
+inline float* band_cells(std::vector<float>& v, std::size_t cells) {
+    constexpr std::size_t kPad = kBandAlign / sizeof(float);
+    if (v.size() < cells + kPad) v.resize(cells + kPad, 0.0f);
+    const auto address = reinterpret_cast<std::uintptr_t>(v.data());
+    const std::size_t skip = ((kBandAlign - address % kBandAlign) % kBandAlign) / sizeof(float);
+    return v.data() + skip;
 }
-inline void sweep_row(const SweepKernels& k, FillRule rule, float* acc, std::uint8_t* flags, int n,
-                      float* out) {
-    k.f32[static_cast<int>(rule)](acc, flags, n, out);
+
+// The sweep kernel of one group of rows, for an output pixel type.
+inline void sweep_group(const SweepKernels& k, FillRule rule, float* acc, std::uint8_t* flags,
+                        int n, int rows, std::uint8_t* out, std::ptrdiff_t out_stride) {
+    k.u8[static_cast<int>(rule)](acc, flags, n, rows, out, out_stride);
+}
+inline void sweep_group(const SweepKernels& k, FillRule rule, float* acc, std::uint8_t* flags,
+                        int n, int rows, float* out, std::ptrdiff_t out_stride) {
+    k.f32[static_cast<int>(rule)](acc, flags, n, rows, out, out_stride);
 }
 
 inline void sweep_dense(const SweepKernels& k, FillRule rule, float* acc, std::ptrdiff_t stride,

@@ -132,24 +132,28 @@ Status Rasterizer::fill_impl(const Polylines& lines, FillRule rule, const View& 
     if (bx0 >= bx1) return ok_status();
 
     const int box_w = bx1 - bx0, box_h = by1 - by0;
-    const std::ptrdiff_t stride = rd::row_cells(box_w);
+    const std::ptrdiff_t stride = rd::group_cells(box_w);
     const std::ptrdiff_t flag_stride = rd::row_flag_bytes(box_w);
-    const int band_rows =
-        std::max(1, std::min(box_h, static_cast<int>(kMaxBandCells / static_cast<std::size_t>(stride))));
-    const std::size_t cells = static_cast<std::size_t>(band_rows) * static_cast<std::size_t>(stride);
-    const std::size_t flags = static_cast<std::size_t>(band_rows) * static_cast<std::size_t>(flag_stride);
+    // Whole groups per band (at least one fits: group_cells(kMaxBitmapDim) < kMaxBandCells).
+    const int band_groups = std::max(
+        1, std::min(rd::row_groups(box_h), static_cast<int>(kMaxBandCells / static_cast<std::size_t>(stride))));
+    const int band_rows = band_groups * rd::kGroupRows;
+    const std::size_t cells = static_cast<std::size_t>(band_groups) * static_cast<std::size_t>(stride);
+    const std::size_t flags = static_cast<std::size_t>(band_groups) * static_cast<std::size_t>(flag_stride);
     // Grow only; the sweep leaves both all-zero, so no clearing here.
-    if (acc_.size() < cells) acc_.resize(cells, 0.0f);
+    float* const acc = rd::band_cells(acc_, cells);
     if (flags_.size() < flags) flags_.resize(flags, 0);
 
     const rd::SweepKernels& kernels = rd::best_kernels();
     for (int y = by0; y < by1; y += band_rows) {
         const int rows = std::min(band_rows, by1 - y);
-        const rd::Band band{acc_.data(), flags_.data(), stride, flag_stride, box_w, rows};
+        const rd::Band band{acc, flags_.data(), stride, flag_stride, box_w, rows};
         draw_band(lines, origin, bx0, y, band);
-        for (int r = 0; r < rows; ++r)
-            rd::sweep_row(kernels, rule, acc_.data() + r * stride, flags_.data() + r * flag_stride,
-                      box_w, target.row(y + r) + bx0);
+        for (int r = 0; r < rows; r += rd::kGroupRows)
+            rd::sweep_group(kernels, rule, acc + (r >> rd::kGroupShift) * stride,
+                            flags_.data() + (r >> rd::kGroupShift) * flag_stride, box_w,
+                            std::min(rd::kGroupRows, rows - r), target.row(y + r) + bx0,
+                            target.stride);
     }
     return ok_status();
 }

@@ -1,12 +1,14 @@
-// Private: the block walk shared by the SIMD sweep kernels (see sweep.hpp). Header-only and
+// Private: the group walk shared by the SIMD sweep kernels (see sweep.hpp). Header-only and
 // written over a `Block` policy so each instruction-set file instantiates it inside its own
 // target attribute: the policy supplies
-//   Carry                        the running sum, broadcast in a vector
+//   Carry                        the running sums of the group's eight rows
 //   Carry zero()
-//   float first(Carry)           its scalar value
-//   void sum(float* acc, Carry&, Out* out, int count)
-//                                prefix-sums kBlock cells, zeroes them, writes the first
-//                                `count` (1..kBlock) outputs
+//   void values<R>(Carry, Out v[8])
+//                                each row's coverage of its running sum (the value of a run)
+//   void sum<R>(float* acc, Carry&, Out* out, ptrdiff_t out_stride, int count, int rows)
+//                                prefix-sums kBlock columns (column-major, eight rows each),
+//                                zeroes them, writes columns [0, count) (1..kBlock) of output
+//                                rows [0, rows) (1..8)
 #pragma once
 
 #include <algorithm>
@@ -30,9 +32,17 @@ inline void copy_tail(std::uint8_t* out, const std::uint8_t* src, int count) {
 
 // A run of `count` pixels of constant coverage f(a): 32- then 16-byte stores (runs are a few
 // blocks long, where a memset call costs more than the stores), the row's tail by pieces.
-inline void fill_run(std::uint8_t* out, int count, float a, FillRule rule) {
+// Writes `count` bytes of `src` (0..kBlock).
+inline void copy_bytes(std::uint8_t* out, const std::uint8_t* src, int count) {
+    if (count == kBlock)
+        std::memcpy(out, src, kBlock);
+    else
+        copy_tail(out, src, count);
+}
+
+inline void fill_run(std::uint8_t* out, int count, std::uint8_t value) {
     std::uint8_t chunk[2 * kBlock];
-    std::memset(chunk, coverage_u8(a, rule), sizeof chunk);
+    std::memset(chunk, value, sizeof chunk);
     for (; count >= 2 * kBlock; count -= 2 * kBlock, out += 2 * kBlock)
         std::memcpy(out, chunk, 2 * kBlock);
     if (count >= kBlock) {
@@ -42,9 +52,7 @@ inline void fill_run(std::uint8_t* out, int count, float a, FillRule rule) {
     }
     copy_tail(out, chunk, count);
 }
-inline void fill_run(float* out, int count, float a, FillRule rule) {
-    std::fill(out, out + count, coverage_of(a, rule));
-}
+inline void fill_run(float* out, int count, float value) { std::fill(out, out + count, value); }
 
 // The run [x, end) of a row of n pixels that the sweep writes left to right: everything right
 // of `end` is written again afterwards, so the run may spill over into it. Bytes: four
@@ -52,38 +60,47 @@ inline void fill_run(float* out, int count, float a, FillRule rule) {
 // sizes) without a loop whose varying trip count the branch predictor would miss at each run;
 // longer runs loop on. Near the row's end, where spilling would pass pixel n, the exact fill.
 // Floats: the exact fill.
-inline void fill_run_ahead(std::uint8_t* row, int x, int end, int n, float a, FillRule rule) {
+inline void fill_run_ahead(std::uint8_t* row, int x, int end, int n, std::uint8_t value) {
     constexpr int kChunk = 2 * kBlock, kAhead = 4 * kChunk;
     if (x + kAhead > n) {
-        fill_run(row + x, end - x, a, rule);
+        fill_run(row + x, end - x, value);
         return;
     }
     std::uint8_t v[kChunk];
-    std::memset(v, coverage_u8(a, rule), sizeof v);
+    std::memset(v, value, sizeof v);
     std::uint8_t* out = row + x;
     for (int k = 0; k < kAhead; k += kChunk) std::memcpy(out + k, v, kChunk);
     for (int p = x + kAhead; p < end; p += kChunk) {
         if (p + kChunk > n) {
-            fill_run(row + p, end - p, a, rule);
+            fill_run(row + p, end - p, value);
             return;
         }
         std::memcpy(row + p, v, kChunk);
     }
 }
-inline void fill_run_ahead(float* row, int x, int end, int, float a, FillRule rule) {
-    fill_run(row + x, end - x, a, rule);
+inline void fill_run_ahead(float* row, int x, int end, int, float value) {
+    fill_run(row + x, end - x, value);
 }
 
-// The sparse row: marked blocks are summed, the runs between them filled. The marked blocks are
-// found eight flags at a time (a little-endian word of 0/1 bytes has a set bit at 8k for each
-// marked block k, so ctz / 8 is the next one and word & (word − 1) drops it), which costs no
-// branch per unmarked block: at large sizes a row is mostly runs. Guard blocks past the row's
-// last pixel hold deltas of pieces at x ≈ n but no pixels: they are only cleared.
+// The group's runs [x, end) of constant coverage, one value per row.
+template <typename Out>
+inline void fill_group_run(Out* out, std::ptrdiff_t out_stride, int rows, int x, int end, int n,
+                           const Out* value) {
+    for (int r = 0; r < rows; ++r) fill_run_ahead(out + r * out_stride, x, end, n, value[r]);
+}
+
+// The sparse group: marked blocks are summed, the runs between them filled. The marked blocks
+// are found eight flags at a time (a little-endian word of 0/1 bytes has a set bit at 8k for
+// each marked block k, so ctz / 8 is the next one and word & (word − 1) drops it), which costs
+// no branch per unmarked block: at large sizes a row is mostly runs. Guard blocks past the
+// row's last pixel hold deltas of pieces at x ≈ n but no pixels: they are only cleared.
 template <typename Block, FillRule R, typename Out>
-inline void sweep_blocks(float* acc, std::uint8_t* flags, int n, Out* out) {
+inline void sweep_group(float* acc, std::uint8_t* flags, int n, int rows, Out* out,
+                        std::ptrdiff_t out_stride) {
     const int words = row_flag_bytes(n) >> 3;
     typename Block::Carry carry = Block::zero();
-    int x = 0;  // pixels [0, x) are written
+    Out value[kGroupRows];
+    int x = 0;  // pixels [0, x) of each row are written
     for (int w = 0; w < words; ++w) {
         std::uint64_t word;
         std::memcpy(&word, flags + 8 * w, 8);
@@ -93,35 +110,47 @@ inline void sweep_blocks(float* acc, std::uint8_t* flags, int n, Out* out) {
             const int b = 8 * w + (__builtin_ctzll(word) >> 3);
             word &= word - 1;
             const int x0 = b << kBlockShift;
+            float* cells = acc + static_cast<std::ptrdiff_t>(x0) * kGroupRows;
             if (x0 >= n) {
-                std::memset(acc + x0, 0, sizeof(float) * kBlock);
+                std::memset(cells, 0, sizeof(float) * kBlock * kGroupRows);
                 continue;
             }
-            if (x0 > x) fill_run_ahead(out, x, x0, n, Block::first(carry), R);
-            Block::template sum<R>(acc + x0, carry, out + x0, std::min(n - x0, kBlock));
+            if (x0 > x) {
+                Block::template values<R>(carry, value);
+                fill_group_run(out, out_stride, rows, x, x0, n, value);
+            }
+            Block::template sum<R>(cells, carry, out + x0, out_stride, std::min(n - x0, kBlock),
+                                   rows);
             x = x0 + kBlock;
         } while (word != 0);
     }
-    if (x < n) fill_run(out + x, n - x, Block::first(carry), R);
+    if (x < n) {
+        Block::template values<R>(carry, value);
+        for (int r = 0; r < rows; ++r) fill_run(out + r * out_stride + x, n - x, value[r]);
+    }
 }
 
-// The dense band: every block of every row summed (no flags); the guard cells past the last
+// The dense band: every block of every group summed (no flags); the guard cells past the last
 // output block, which hold deltas but no pixels, are only cleared.
 template <typename Block, FillRule R, typename Out>
-inline void sweep_dense(float* acc, std::ptrdiff_t stride, int n, int rows, Out* out,
+inline void sweep_dense(float* acc, std::ptrdiff_t group_stride, int n, int rows, Out* out,
                         std::ptrdiff_t out_stride) {
     const int nb = (n + kBlock - 1) >> kBlockShift;
     const int cells = row_cells(n);
-    for (int r = 0; r < rows; ++r, acc += stride, out += out_stride) {
+    for (int y = 0; y < rows; y += kGroupRows) {
+        const int group_rows = std::min(kGroupRows, rows - y);
         typename Block::Carry carry = Block::zero();
         for (int b = 0; b < nb; ++b) {
             const int x0 = b << kBlockShift;
-            Block::template sum<R>(acc + x0, carry, out + x0, std::min(n - x0, kBlock));
+            Block::template sum<R>(acc + static_cast<std::ptrdiff_t>(x0) * kGroupRows, carry,
+                                   out + x0, out_stride, std::min(n - x0, kBlock), group_rows);
         }
-        // At most one guard block (row_cells adds three cells); a fixed-size clear, not a
-        // memset call per row.
+        // At most one guard block (row_cells adds three cells); a fixed-size clear.
         for (int c = nb << kBlockShift; c < cells; c += kBlock)
-            std::memset(acc + c, 0, sizeof(float) * kBlock);
+            std::memset(acc + static_cast<std::ptrdiff_t>(c) * kGroupRows, 0,
+                        sizeof(float) * kBlock * kGroupRows);
+        acc += group_stride;
+        out += kGroupRows * out_stride;
     }
 }
 
