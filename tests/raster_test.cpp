@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "bezel/raster.hpp"
+#include "raster/accumulate.hpp"
 #include "raster/fill_common.hpp"
 #include "raster/reference.hpp"
 #include "raster/render_flatten.hpp"
@@ -722,6 +723,65 @@ TEST(RasterKernels, GroupSweepsMatchRowByRowSumsOnRandomGroups) {
             }
         }
     }
+}
+
+TEST(RasterKernels, VectorSteepEdgesAddTheCellsOfTheRowByRowLoop) {
+    // Long steep edges and stems cross whole groups of rows, which draw_line hands to the AVX2
+    // kernels (draw_avx2.cpp). Drawn into a band with the kernels and into one without, every
+    // cell must match: steep edges bit for bit (the same operations in the same order), stems
+    // within float rounding (the scalar stem loop steps x by dxdy, the kernel takes it from the
+    // formula at each row border). Both directions, both marking modes; the kernels may mark a
+    // block the loop does not (the column range of a whole group), never the reverse.
+    using namespace raster_detail;
+    const SteepKernels* k = avx2_steep_kernels();
+    if (k == nullptr) GTEST_SKIP() << "no AVX2 on this CPU";
+    const int W = 90, H = 120;
+    const std::size_t cells = static_cast<std::size_t>(row_groups(H)) * group_cells(W);
+    std::vector<float> sa, sb;
+    float* a = band_cells(sa, cells);
+    float* b = band_cells(sb, cells);
+    std::vector<std::uint8_t> fa(static_cast<std::size_t>(row_groups(H) * row_flag_bytes(W))),
+        fb = fa;
+    const Band with{a, fa.data(), group_cells(W), row_flag_bytes(W), W, H, k};
+    const Band without{b, fb.data(), group_cells(W), row_flag_bytes(W), W, H, nullptr};
+    std::mt19937 rng(4242);
+    std::uniform_real_distribution<double> ux(0.0, W), uy(0.0, H), du(-1.0, 1.0);
+    int steep = 0, stems = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        const bool stem = trial % 2 == 1;
+        double x0 = ux(rng), y0 = uy(rng), y1 = uy(rng), x1;
+        if (std::abs(y1 - y0) < 17.0) continue;  // needs a whole group between its end rows
+        if (stem) {
+            const double c = std::floor(x0);
+            x0 = c + 0.5 + 0.49 * du(rng);
+            x1 = c + 0.5 + 0.49 * du(rng);
+            if (x0 >= W || x1 >= W) continue;
+        } else {
+            x1 = std::clamp(x0 + du(rng) * std::abs(y1 - y0), 0.0, static_cast<double>(W));
+            if (std::floor(std::min(x0, x1)) + 1.0 >= std::max(x0, x1)) continue;  // a stem
+        }
+        (stem ? stems : steep)++;
+        if (trial % 3 == 0) {
+            draw_line<true>(with, x0, y0, x1, y1);
+            draw_line<true>(without, x0, y0, x1, y1);
+        } else {
+            draw_line<false>(with, x0, y0, x1, y1);
+            draw_line<false>(without, x0, y0, x1, y1);
+        }
+        for (std::size_t c = 0; c < cells; ++c) {
+            if (stem) {
+                ASSERT_NEAR(a[c], b[c], 1e-5) << "stem, trial " << trial << " cell " << c;
+            } else {
+                ASSERT_EQ(a[c], b[c]) << "steep edge, trial " << trial << " cell " << c;
+            }
+        }
+        if (trial % 3 == 0) {  // every block the loop marks is marked (extra marks are harmless)
+            for (std::size_t f = 0; f < fa.size(); ++f) ASSERT_GE(fa[f], fb[f]) << "flag " << f;
+        }
+        std::copy(a, a + cells, b);  // the next trial starts from equal bands
+    }
+    EXPECT_GT(steep, 50);
+    EXPECT_GT(stems, 50);
 }
 
 TEST(RasterKernels, DenseBandSweepsMatchRowByRowSums) {

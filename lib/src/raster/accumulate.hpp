@@ -28,12 +28,30 @@
 
 namespace bezel::raster_detail {
 
+struct Band;
+
+// Draws the full rows of groups [g0, g1) of the steep edge x(y) = x0 + (y − y0)·dxdy,
+// |dxdy| ≤ 1 (inv_slope = |dy/dx|, dir = ±1 its winding sign), which covers every one of those
+// rows whole and lies in [0, width] there: the cells draw_line's row-by-row loop would add.
+using SteepGroupsFn = void (*)(const Band& band, int g0, int g1, double x0, double y0,
+                               double dxdy, double inv_slope, double dir);
+// The same for an edge that stays inside column ic (two cells a row).
+using StemGroupsFn = void (*)(const Band& band, int g0, int g1, int ic, double x0, double y0,
+                              double dxdy, double dir);
+struct SteepKernels {
+    SteepGroupsFn steep[2];  // indexed by kMark
+    StemGroupsFn stems[2];
+};
+// Null when the CPU (or the build) has no AVX2 (draw_avx2.cpp); decided once.
+const SteepKernels* avx2_steep_kernels();
+
 struct Band {
     float* acc;                  // kBandAlign-aligned
     std::uint8_t* flags;
     std::ptrdiff_t stride;       // floats per group, group_cells(width)
     std::ptrdiff_t flag_stride;  // bytes per group, row_flag_bytes(width)
     int width, rows;
+    const SteepKernels* steep;   // avx2_steep_kernels(), or null: every row drawn one by one
 };
 
 // Cell 0 of row j (cell i is at [i · kGroupRows]) and the flag row of j's group.
@@ -155,6 +173,29 @@ inline void draw_narrow_piece(float* row, std::uint8_t* frow, double xa, double 
 // |dy/dx| for draw_narrow_piece, finite for a vertical edge.
 inline double inverse_slope(double adx, double ady) { return ady / std::max(adx, 1e-300); }
 
+// Rows [ja, jb) of an edge from (x0, y0) to (x1, y1) that stays inside column ic (draw_line's
+// stem case), each row's piece clipped to the edge's y range; x at a row border by the formula.
+template <bool kMark>
+inline void draw_stem_rows(const Band& band, int ja, int jb, int ic, double x0, double y0,
+                           double x1, double y1, double dxdy, double dir) {
+    for (int j = ja; j < jb; ++j) {
+        const double ya = std::max(y0, static_cast<double>(j));
+        const double yb = std::min(y1, static_cast<double>(j + 1));
+        const double xa = ya == y0 ? x0 : x0 + (ya - y0) * dxdy;
+        const double xb = yb == y1 ? x1 : x0 + (yb - y0) * dxdy;
+        const double dy = dir * (yb - ya);
+        const double right = dy * (0.5 * (xa + xb) - ic);
+        float* cell = row_of(band, j) + ic * kCell;
+        cell[0] += static_cast<float>(dy - right);
+        cell[kCell] += static_cast<float>(right);
+        if constexpr (kMark) {
+            std::uint8_t* f = flags_of(band, j);
+            f[ic >> kBlockShift] = 1;
+            f[(ic + 1) >> kBlockShift] = 1;
+        }
+    }
+}
+
 // Draws the edge (x0, y0) → (x1, y1) into the band.
 // Precondition: 0 ≤ x ≤ width and 0 ≤ y ≤ rows for both ends (the caller clips); the direct
 // route also passes coordinates in (−1, 0), which truncation puts in column / row 0.
@@ -195,7 +236,18 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
     if (xhi <= static_cast<double>(ic + 1)) {
         // The whole edge stays in column ic (stems, steep edges at large sizes): each row's piece
         // adds dy·(1 − m) and dy·m at ic, ic + 1 with m the piece's mean x − ic, and m moves by
-        // dxdy per full row. Only the first and last rows are partial.
+        // dxdy per full row. Only the first and last rows are partial. Whole groups between
+        // them go to the vector kernel when there is one.
+        if (band.steep != nullptr) {
+            const int g0 = (j + kGroupRows) >> kGroupShift, g1 = jl >> kGroupShift;
+            if (g0 < g1) {
+                draw_stem_rows<kMark>(band, j, g0 << kGroupShift, ic, x0, y0, x1, y1, dxdy, dir);
+                band.steep->stems[kMark](band, g0, g1, ic, x0, y0, dxdy, dir);
+                draw_stem_rows<kMark>(band, g1 << kGroupShift, jl + 1, ic, x0, y0, x1, y1, dxdy,
+                                      dir);
+                return;
+            }
+        }
         const double yb0 = static_cast<double>(j + 1);
         double xa = x0 + (yb0 - y0) * dxdy;  // x where the edge leaves row j
         double dy = dir * (yb0 - y0);
@@ -234,8 +286,28 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
     }
     double ya = y0, xa = x0;
     if (adx <= ady) {
-        // Steep: a row's piece moves |dxdy| ≤ 1 in x. Interior rows are full (|dy| = 1).
+        // Steep: a row's piece moves |dxdy| ≤ 1 in x. Interior rows are full (|dy| = 1). Whole
+        // groups strictly between the first and the last row go to the vector kernel when there
+        // is one, the rows around them piece by piece; x at a row border is the same formula
+        // either way.
         const double inv_slope = inverse_slope(adx, ady);
+        if (band.steep != nullptr) {
+            const int g0 = (j + kGroupRows) >> kGroupShift, g1 = jl >> kGroupShift;
+            if (g0 < g1) {
+                for (const int jv = g0 << kGroupShift; j < jv; ++j) {
+                    const double yb = static_cast<double>(j + 1);
+                    const double xb = x0 + (yb - y0) * dxdy;
+                    draw_narrow_piece<kMark>(row_of(band, j), flags_of(band, j), xa, xb, yb - ya,
+                                             dir, inv_slope);
+                    ya = yb;
+                    xa = xb;
+                }
+                band.steep->steep[kMark](band, g0, g1, x0, y0, dxdy, inv_slope, dir);
+                j = g1 << kGroupShift;
+                ya = static_cast<double>(j);
+                xa = x0 + (ya - y0) * dxdy;
+            }
+        }
         for (; j < jl; ++j) {
             const double yb = static_cast<double>(j + 1);
             const double xb = x0 + (yb - y0) * dxdy;

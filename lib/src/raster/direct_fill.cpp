@@ -152,7 +152,8 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     }
     clear_outside_box(target, bx0, bx1, by0, by1);
     const V2 shift{_mm_set_pd(static_cast<double>(by0), static_cast<double>(bx0))};
-    const Band band{acc, scratch.flags.data(), stride, flag_stride, box_w, box_h};
+    const Band band{acc, scratch.flags.data(), stride, flag_stride, box_w, box_h,
+                    avx2_steep_kernels()};
     const SweepKernels& kernels = best_kernels();
     if (row_blocks(box_w) <= kDenseBlocks) {
         draw_path<false>(path, tp.data(), shift, tol, band);

@@ -147,7 +147,8 @@ Status Rasterizer::fill_impl(const Polylines& lines, FillRule rule, const View& 
     const rd::SweepKernels& kernels = rd::best_kernels();
     for (int y = by0; y < by1; y += band_rows) {
         const int rows = std::min(band_rows, by1 - y);
-        const rd::Band band{acc, flags_.data(), stride, flag_stride, box_w, rows};
+        const rd::Band band{acc, flags_.data(), stride, flag_stride, box_w, rows,
+                            rd::avx2_steep_kernels()};
         draw_band(lines, origin, bx0, y, band);
         for (int r = 0; r < rows; r += rd::kGroupRows)
             rd::sweep_group(kernels, rule, acc + (r >> rd::kGroupShift) * stride,
