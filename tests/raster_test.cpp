@@ -784,6 +784,40 @@ TEST(RasterKernels, VectorSteepEdgesAddTheCellsOfTheRowByRowLoop) {
     EXPECT_GT(stems, 50);
 }
 
+TEST(RasterKernels, EdgesStartingJustAboveRowZeroKeepEveryRowBalanced) {
+    // The direct route hands draw_line vertices up to 1/3 px above row 0 (balanced vertices
+    // outside the control box); row 0 takes that part of every edge. If one drawing path
+    // clipped it instead, the deltas of row 0 would no longer add up to zero past the polygon
+    // and a streak would run to the row's end. Closed polygons with such a vertex, each edge a
+    // stem, a steep edge or a shallow one, long enough for the vector kernels: every row's
+    // deltas must sum to zero, with and without the kernels.
+    using namespace raster_detail;
+    const int W = 40, H = 60;
+    const std::size_t cells = static_cast<std::size_t>(row_groups(H)) * group_cells(W);
+    for (const SteepKernels* k : {avx2_steep_kernels(), static_cast<const SteepKernels*>(nullptr)}) {
+        const double polys[][3][2] = {
+            {{5.5, -0.25}, {5.9, 50.5}, {20.2, 44.0}},    // a stem from above row 0
+            {{5.5, -0.3}, {12.8, 47.2}, {30.1, 10.5}},    // a steep edge from above row 0
+            {{2.5, -0.05}, {38.0, 3.5}, {3.1, 40.0}},     // a shallow one
+        };
+        for (const auto& poly : polys) {
+            std::vector<float> storage;
+            float* acc = band_cells(storage, cells);
+            std::vector<std::uint8_t> flags(static_cast<std::size_t>(row_groups(H) * row_flag_bytes(W)));
+            const Band band{acc, flags.data(), group_cells(W), row_flag_bytes(W), W, H, k};
+            for (int e = 0; e < 3; ++e)
+                draw_line<false>(band, poly[e][0], poly[e][1], poly[(e + 1) % 3][0],
+                                 poly[(e + 1) % 3][1]);
+            for (int y = 0; y < H; ++y) {
+                double sum = 0.0;
+                for (int x = 0; x < row_cells(W); ++x) sum += row_of(band, y)[x * kCell];
+                ASSERT_NEAR(sum, 0.0, 1e-5) << "row " << y << (k ? " with" : " without")
+                                            << " kernels, polygon from y " << poly[0][1];
+            }
+        }
+    }
+}
+
 TEST(RasterKernels, DenseBandSweepsMatchRowByRowSums) {
     // The dense kernels sum every block of every group of a band in one call (no flags) and
     // write rows out_stride apart; each row must equal its running sums, and acc must end all

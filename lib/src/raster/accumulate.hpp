@@ -179,7 +179,9 @@ template <bool kMark>
 inline void draw_stem_rows(const Band& band, int ja, int jb, int ic, double x0, double y0,
                            double x1, double y1, double dxdy, double dir) {
     for (int j = ja; j < jb; ++j) {
-        const double ya = std::max(y0, static_cast<double>(j));
+        // The edge's first row starts at y0, even where y0 is in (−1, 0): the direct route's
+        // excursions above row 0, which row 0 takes, as every other path of draw_line does.
+        const double ya = j == static_cast<int>(y0) ? y0 : static_cast<double>(j);
         const double yb = std::min(y1, static_cast<double>(j + 1));
         const double xa = ya == y0 ? x0 : x0 + (ya - y0) * dxdy;
         const double xb = yb == y1 ? x1 : x0 + (yb - y0) * dxdy;
