@@ -48,8 +48,9 @@ inline constexpr int kMaxBitmapDim = 16384;
 // Error, checked before any work: a hostile or runaway input meets this wall instead of the
 // memory limit. 4M segments is ~200× the most complex glyph of a CJK font at 512 px.
 inline constexpr std::size_t kMaxEdges = std::size_t{1} << 22;
-// The scratch accumulation buffer never exceeds this many floats (1 MiB); taller fills are
-// processed in horizontal bands. Not a limit on input: it bounds memory, not what can be drawn.
+// The scratch accumulation buffer never exceeds this many floats (1 MiB, plus 32 bytes to align
+// it); taller fills are processed in horizontal bands of whole 8-row groups. Not a limit on
+// input: it bounds memory, not what can be drawn.
 inline constexpr std::size_t kMaxBandCells = std::size_t{1} << 18;
 
 // Flattening tolerance fill_path uses unless told otherwise: 0.01 px. Why: exact-area coverage

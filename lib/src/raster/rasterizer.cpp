@@ -134,7 +134,8 @@ Status Rasterizer::fill_impl(const Polylines& lines, FillRule rule, const View& 
     const int box_w = bx1 - bx0, box_h = by1 - by0;
     const std::ptrdiff_t stride = rd::group_cells(box_w);
     const std::ptrdiff_t flag_stride = rd::row_flag_bytes(box_w);
-    // Whole groups per band (at least one fits: group_cells(kMaxBitmapDim) < kMaxBandCells).
+    // Whole groups per band; at least one always fits.
+    static_assert(rd::group_cells(kMaxBitmapDim) <= static_cast<std::ptrdiff_t>(kMaxBandCells));
     const int band_groups = std::max(
         1, std::min(rd::row_groups(box_h), static_cast<int>(kMaxBandCells / static_cast<std::size_t>(stride))));
     const int band_rows = band_groups * rd::kGroupRows;
