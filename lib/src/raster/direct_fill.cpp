@@ -112,8 +112,8 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     // scratch already has room; a first, larger path is measured before anything is allocated
     // for it (a refused path allocates nothing).
     std::vector<Point>& tp = scratch.points;
-    const bool stored = tp.capacity() >= src.size();
-    if (stored) tp.resize(src.size());
+    // tp only grows (a resize per fill was a call, and zeroed what the transform overwrites).
+    const bool stored = tp.size() >= src.size();
     __m128d lo, hi, poison;
     if (stored)
         transform_points<true>(src, m, tp.data(), lo, hi, poison);
@@ -147,7 +147,7 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     if (scratch.flags.size() < flags) scratch.flags.resize(flags, 0);
 
     if (!stored) {
-        tp.resize(src.size());
+        tp.resize(src.size());  // the largest path so far
         transform_points<true>(src, m, tp.data(), lo, hi, poison);
     }
     clear_outside_box(target, bx0, bx1, by0, by1);
