@@ -55,12 +55,36 @@ inline void fill_run(std::uint8_t* out, int count, std::uint8_t value) {
 inline void fill_run(float* out, int count, float value) { std::fill(out, out + count, value); }
 
 // The group's runs [x, end) of constant coverage, one value per row; rows of value 0 are left
-// as they are (sweep_group cleared them).
-template <typename Out>
-inline void fill_group_run(Out* out, std::ptrdiff_t out_stride, int rows, int x, int end,
-                           const Out* value) {
+// as they are (sweep_group cleared them). Bytes: the same stores for every row (a row of value 0
+// gets zeros again), so the only branches are per run, not per row: nothing to do when all eight
+// values are 0; else 32-byte stores with the last one ending at `end`, or 16-byte ones for
+// shorter runs, pieces below 16.
+inline void fill_group_run(std::uint8_t* out, std::ptrdiff_t out_stride, int rows, int x, int end,
+                           const std::uint8_t* value) {
+    std::uint64_t any;
+    std::memcpy(&any, value, 8);
+    if (any == 0) return;
+    const int len = end - x;
+    std::uint8_t v[kGroupRows][2 * kBlock];
+    for (int r = 0; r < kGroupRows; ++r) std::memset(v[r], value[r], sizeof v[r]);
+    if (len >= 2 * kBlock) {
+        for (int p = x; p + 2 * kBlock < end; p += 2 * kBlock)
+            for (int r = 0; r < rows; ++r) std::memcpy(out + r * out_stride + p, v[r], 2 * kBlock);
+        for (int r = 0; r < rows; ++r)
+            std::memcpy(out + r * out_stride + end - 2 * kBlock, v[r], 2 * kBlock);
+    } else if (len >= kBlock) {
+        for (int r = 0; r < rows; ++r) {
+            std::memcpy(out + r * out_stride + x, v[r], kBlock);
+            std::memcpy(out + r * out_stride + end - kBlock, v[r], kBlock);
+        }
+    } else {
+        for (int r = 0; r < rows; ++r) copy_tail(out + r * out_stride + x, v[r], len);
+    }
+}
+inline void fill_group_run(float* out, std::ptrdiff_t out_stride, int rows, int x, int end,
+                           const float* value) {
     for (int r = 0; r < rows; ++r)
-        if (value[r] != Out{0}) fill_run(out + r * out_stride + x, end - x, value[r]);
+        if (value[r] != 0.0f) fill_run(out + r * out_stride + x, end - x, value[r]);
 }
 
 // The sparse group: marked blocks are summed, the runs between them filled. The group's rows
