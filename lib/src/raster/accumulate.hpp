@@ -75,10 +75,12 @@ inline void mark_cells(std::uint8_t* frow, int i0, int i1) {
 // flags); false leaves the flags alone, for a DENSE band that is swept whole (narrow boxes,
 // where nearly every block has an edge anyway; SweepKernels::dense_*).
 
-// Adds one in-row piece (xa → xb, vertical extent dy) to the deltas of one row.
+// Adds one in-row piece (xa → xb, vertical extent dy) of an edge whose dy per unit of x is
+// `slope` (signed as dy) to the deltas of one row.
 // Precondition: 0 ≤ xa, xb ≤ width, so indices ≤ width + 1 < stride.
 template <bool kMark = true>
-inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb, double dy) {
+inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb, double dy,
+                           double slope) {
     int i0 = static_cast<int>(xa);  // floor: xa ≥ 0
     int i1 = static_cast<int>(xb);
     if (i0 != i1) {
@@ -99,13 +101,14 @@ inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb,
         }
         return;
     }
-    // Several columns; s = dy per unit of x (xb − xa ≥ the part past a column boundary > 0, and
-    // a tiny width only makes s large, not inexact: s·width below gives back the piece's dy).
+    // Several columns; s = dy per unit of x: the edge's slope, computed once per edge (a
+    // division per row was the hottest line of wide pieces at 256 px). It is this piece's
+    // dy / (xb − xa) up to rounding, so the piece's deltas add up to its dy within a few ulps.
     // The first sub-piece has width w0 = (i0+1) − xa and mean offset 1 − w0/2, so it adds
     // s·w0·(w0/2) to acc[i0] and s·w0·(1 − w0/2) to acc[i0+1]. Each full column adds s/2 to
     // itself and s/2 to the next; the last sub-piece (width w1 = xb − i1, mean offset w1/2) adds
     // s·w1·(1 − w1/2) to acc[i1] and s·w1·(w1/2) to acc[i1+1].
-    const double s = dy / (xb - xa);
+    const double s = slope;
     const double w0 = (i0 + 1) - xa;
     const double d0 = s * w0;
     row[i0 * kCell] += static_cast<float>(d0 * (0.5 * w0));
@@ -229,7 +232,7 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
         if (adx <= 1.0)
             draw_narrow_piece<kMark>(row, frow, x0, x1, ady, dir, inverse_slope(adx, ady));
         else
-            draw_row_piece<kMark>(row, frow, x0, x1, dir * ady);
+            draw_row_piece<kMark>(row, frow, x0, x1, dir * ady, dir * (ady / adx));
         return;
     }
     const double dxdy = dx / ady;
@@ -322,11 +325,12 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
                                  inv_slope);
         return;
     }
+    const double slope = dir * (ady / adx);  // adx > ady > 0
     for (; j <= jl; ++j) {
         const double yb = std::min(y1, static_cast<double>(j + 1));
         // Clamped to the edge's own x range: rounding must not push an index past the band.
         const double xb = yb == y1 ? x1 : std::clamp(x0 + (yb - y0) * dxdy, xlo, xhi);
-        draw_row_piece<kMark>(row_of(band, j), flags_of(band, j), xa, xb, dir * (yb - ya));
+        draw_row_piece<kMark>(row_of(band, j), flags_of(band, j), xa, xb, dir * (yb - ya), slope);
         ya = yb;
         xa = xb;
     }
