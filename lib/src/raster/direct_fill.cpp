@@ -137,9 +137,15 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     const double diagonal2 = (x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0);
     if (!(limit >= 2.0 && diagonal2 <= bound * bound)) return false;
 
-    int bx0, bx1, by0, by1;
-    pixel_range(x0, x1, 0.0, W, bx0, bx1);
-    pixel_range(y0, y1, 0.0, H, by0, by1);
+    // The pixel box: 0 ≤ x0 ≤ x1 ≤ W here (and so for y), so ⌊·⌋ and ⌈·⌉ are int conversions
+    // (SSE2 has no rounding instruction: std::floor / std::ceil are long sequences, measured
+    // the hottest line left in a fill's setup).
+    const auto floor_int = [](double v) { return static_cast<int>(v); };
+    const auto ceil_int = [](double v) {
+        const int i = static_cast<int>(v);
+        return i + (static_cast<double>(i) < v);
+    };
+    const int bx0 = floor_int(x0), bx1 = ceil_int(x1), by0 = floor_int(y0), by1 = ceil_int(y1);
     if (bx0 >= bx1 || by0 >= by1) return false;  // no area: the general route clears
     const int box_w = bx1 - bx0, box_h = by1 - by0;
     const std::ptrdiff_t stride = group_cells(box_w), flag_stride = row_flag_bytes(box_w);
