@@ -75,25 +75,45 @@ void draw_path(const Path& path, const Point* points, V2 shift, double tol, cons
 }
 
 // Maps `src` by `m` into `out` (when kStore) and returns the box of the results (lo, hi) and
-// the sum of their products with 0, which is 0 unless one is NaN or infinite. Packed,
-// (x, y) = (a, b)·x + (c, d)·y + (e, f): the operations of Affine's product, in its order.
+// `nan`, all ones in a lane where a result was NaN (an infinite one leaves the box unbounded,
+// which the caller's box test refuses). Packed, (x, y) = (a, b)·x + (c, d)·y + (e, f): the
+// operations of Affine's product, in its order. Two points a step with their own min, max and
+// NaN accumulators: one chain of each was the loop's limit (4 cycles a point for the add that
+// found NaN and infinity before), and the or of an unordered compare is a 1-cycle chain.
 template <bool kStore>
 void transform_points(const std::vector<Point>& src, const Affine& m, Point* out, __m128d& lo,
-                      __m128d& hi, __m128d& poison) {
+                      __m128d& hi, __m128d& nan) {
     const __m128d ab = _mm_set_pd(m.b, m.a), cd = _mm_set_pd(m.d, m.c), ef = _mm_set_pd(m.f, m.e);
-    lo = _mm_set1_pd(HUGE_VAL);
-    hi = _mm_set1_pd(-HUGE_VAL);
-    poison = _mm_setzero_pd();
-    for (std::size_t i = 0; i < src.size(); ++i) {
+    const auto map = [&](std::size_t i) {
         const __m128d q = _mm_loadu_pd(&src[i].x);
         const __m128d t = _mm_add_pd(_mm_add_pd(_mm_mul_pd(ab, _mm_unpacklo_pd(q, q)),
                                                 _mm_mul_pd(cd, _mm_unpackhi_pd(q, q))),
                                      ef);
         if constexpr (kStore) _mm_storeu_pd(&out[i].x, t);
-        lo = _mm_min_pd(lo, t);
-        hi = _mm_max_pd(hi, t);
-        poison = _mm_add_pd(poison, _mm_mul_pd(t, _mm_setzero_pd()));
+        return t;
+    };
+    __m128d lo0 = _mm_set1_pd(HUGE_VAL), lo1 = lo0, hi0 = _mm_set1_pd(-HUGE_VAL), hi1 = hi0;
+    __m128d nan0 = _mm_setzero_pd(), nan1 = nan0;
+    const std::size_t n = src.size();
+    std::size_t i = 0;
+    for (; i + 1 < n; i += 2) {
+        const __m128d t0 = map(i), t1 = map(i + 1);
+        lo0 = _mm_min_pd(lo0, t0);
+        lo1 = _mm_min_pd(lo1, t1);
+        hi0 = _mm_max_pd(hi0, t0);
+        hi1 = _mm_max_pd(hi1, t1);
+        nan0 = _mm_or_pd(nan0, _mm_cmpunord_pd(t0, t0));
+        nan1 = _mm_or_pd(nan1, _mm_cmpunord_pd(t1, t1));
     }
+    if (i < n) {
+        const __m128d t = map(i);
+        lo0 = _mm_min_pd(lo0, t);
+        hi0 = _mm_max_pd(hi0, t);
+        nan0 = _mm_or_pd(nan0, _mm_cmpunord_pd(t, t));
+    }
+    lo = _mm_min_pd(lo0, lo1);
+    hi = _mm_max_pd(hi0, hi1);
+    nan = _mm_or_pd(nan0, nan1);
 }
 
 }  // namespace
@@ -114,12 +134,12 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     std::vector<Point>& tp = scratch.points;
     // tp only grows (a resize per fill was a call, and zeroed what the transform overwrites).
     const bool stored = tp.size() >= src.size();
-    __m128d lo, hi, poison;
+    __m128d lo, hi, nan;
     if (stored)
-        transform_points<true>(src, m, tp.data(), lo, hi, poison);
+        transform_points<true>(src, m, tp.data(), lo, hi, nan);
     else
-        transform_points<false>(src, m, nullptr, lo, hi, poison);
-    if (_mm_movemask_pd(_mm_cmpneq_pd(poison, _mm_setzero_pd())) != 0) return false;
+        transform_points<false>(src, m, nullptr, lo, hi, nan);
+    if (_mm_movemask_pd(nan) != 0) return false;
     const double x0 = _mm_cvtsd_f64(lo), y0 = _mm_cvtsd_f64(_mm_unpackhi_pd(lo, lo));
     const double x1 = _mm_cvtsd_f64(hi), y1 = _mm_cvtsd_f64(_mm_unpackhi_pd(hi, hi));
     if (!(x0 >= 0.0 && y0 >= 0.0 && x1 <= W && y1 <= H)) return false;  // needs clipping
@@ -158,7 +178,7 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
 
     if (!stored) {
         tp.resize(src.size());  // the largest path so far
-        transform_points<true>(src, m, tp.data(), lo, hi, poison);
+        transform_points<true>(src, m, tp.data(), lo, hi, nan);
     }
     clear_outside_box(target, bx0, bx1, by0, by1);
     const V2 shift{_mm_set_pd(static_cast<double>(by0), static_cast<double>(bx0))};
