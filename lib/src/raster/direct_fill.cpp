@@ -26,16 +26,21 @@ namespace {
 // draw_line call per vertex: a call in the middle of the flattening loop makes the caller spill
 // its forward differences (every vector register is caller-saved), the two loops are each
 // tighter alone, and the batch draws two segments per instruction.
+//
+// The queue is a separate object (draw_path's), not a member: the segment stores are vector
+// stores, which may alias anything, and into a member array they would make the compiler
+// reload `queued` and `cur` from the sink after every push (one store-to-load chain through the
+// walk); into another object they cannot touch the sink's fields.
 template <bool kMark, bool kSplit>
 struct DrawSink {
-    explicit DrawSink(const Band& b)
-        : band(b), wh(_mm_set_pd(static_cast<double>(b.rows), static_cast<double>(b.width))) {}
+    DrawSink(const Band& b, SegmentBatch& q)
+        : band(b), batch(q), wh(_mm_set_pd(static_cast<double>(b.rows), static_cast<double>(b.width))) {}
 
     const Band& band;
+    SegmentBatch& batch;
     __m128d wh;  // (width, rows)
     __m128d first = _mm_setzero_pd(), cur = _mm_setzero_pd();
     int queued = 0;
-    SegmentBatch batch;
 
     // min(x, width), min(y, rows); the points are finite (fill_path_direct checked).
     __m128d clamp(V2 p) const { return _mm_min_pd(p.v, wh); }
@@ -64,7 +69,8 @@ struct DrawSink {
 // `points` are the transformed control points, `shift` the band's top-left pixel.
 template <bool kMark, bool kSplit>
 void draw_path(const Path& path, const Point* points, V2 shift, double tol, const Band& band) {
-    DrawSink<kMark, kSplit> sink(band);
+    SegmentBatch batch;
+    DrawSink<kMark, kSplit> sink(band, batch);
     walk_balanced(path.verbs(), tol,
                   [points, shift](std::size_t i, V2& p) {
                       p = V2::of(points[i]) - shift;
