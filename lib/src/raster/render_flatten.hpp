@@ -70,11 +70,19 @@ inline double len2(V2 a) {
 // Glyph curves nearly all need n ≤ 8, and there ⌈s⌉ is counted without a square root: s > i
 // exactly when s⁴ = dd2·k² > i⁴, so n = 1 + #{i = 1..7 : dd2·k² > i⁴}. That is a few
 // independent compares instead of two dependent square roots at the head of every curve.
+// The compares are packed, two per instruction, and their all-ones results summed as integers:
+// a compare and a flag-to-integer move each, scalar, were the bulk of a curve's setup.
 inline int wang_steps(double dd2, double k) {
     const double t = dd2 * (k * k);
-    if (t <= 4096.0) {  // s ≤ 8
-        return 1 + (t > 1.0) + (t > 16.0) + (t > 81.0) + (t > 256.0) + (t > 625.0) +
-               (t > 1296.0) + (t > 2401.0);
+    if (t <= 4096.0) {  // s ≤ 8: n = 1 + #{i = 1..7 : t > i⁴} (t > 8⁴ = 4096 is false here)
+        const __m128d tt = _mm_set1_pd(t);
+        const __m128i c01 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_set_pd(16.0, 1.0)));
+        const __m128i c23 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_set_pd(256.0, 81.0)));
+        const __m128i c45 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_set_pd(1296.0, 625.0)));
+        const __m128i c67 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_set_pd(4096.0, 2401.0)));
+        __m128i neg = _mm_add_epi64(_mm_add_epi64(c01, c23), _mm_add_epi64(c45, c67));
+        neg = _mm_add_epi64(neg, _mm_unpackhi_epi64(neg, neg));  // −count in the low lane
+        return 1 - static_cast<int>(_mm_cvtsi128_si64(neg));
     }
     const double n = std::ceil(std::sqrt(std::sqrt(dd2) * k));
     if (!(n <= static_cast<double>(kMaxSegmentsPerCurve))) return 0;
