@@ -1,6 +1,7 @@
-// AVX2 sweep kernels: a column of a group (eight rows) is one 8-lane vector. Everything after the pragma is
-// compiled for AVX2 and only called after __builtin_cpu_supports("avx2") said yes, so the
-// library still runs on any x86-64. Standard headers come first so that they stay baseline code.
+// AVX2 sweep kernels: a column of a group (eight rows) is one 8-lane vector. Everything after
+// the pragma is compiled for AVX2 and only called after __builtin_cpu_supports("avx2") said
+// yes, so the library still runs on any x86-64. Standard headers come first so that they stay
+// baseline code.
 #include <algorithm>
 #include <cstdint>
 #include <cstring>

@@ -38,20 +38,7 @@ inline void copy_bytes(std::uint8_t* out, const std::uint8_t* src, int count) {
         copy_tail(out, src, count);
 }
 
-// A run of `count` pixels of one coverage value: 32- then 16-byte stores (runs are a few
-// blocks long, where a memset call costs more than the stores), the row's tail by pieces.
-inline void fill_run(std::uint8_t* out, int count, std::uint8_t value) {
-    std::uint8_t chunk[2 * kBlock];
-    std::memset(chunk, value, sizeof chunk);
-    for (; count >= 2 * kBlock; count -= 2 * kBlock, out += 2 * kBlock)
-        std::memcpy(out, chunk, 2 * kBlock);
-    if (count >= kBlock) {
-        std::memcpy(out, chunk, kBlock);
-        out += kBlock;
-        count -= kBlock;
-    }
-    copy_tail(out, chunk, count);
-}
+// A run of `count` pixels of one coverage value (floats; bytes go through fill_group_run).
 inline void fill_run(float* out, int count, float value) { std::fill(out, out + count, value); }
 
 // The group's runs [x, end) of constant coverage, one value per row; rows of value 0 are left
