@@ -125,16 +125,6 @@ inline void draw_row_piece(float* row, std::uint8_t* frow, double xa, double xb,
     if constexpr (kMark) mark_cells(frow, i0, i1 + 1);
 }
 
-// One in-row piece that spans at most two columns (|xb − xa| ≤ 1), drawn without a branch on
-// whether it crosses the column border: the common piece of every steep edge and of most
-// segments at small sizes.
-// With lo ≤ hi its x ends, i = ⌊lo⌋ and X = i + 1, the part [lo, xm], xm = min(hi, X), lies in
-// column i and the part [xm, hi] in column i + 1 (empty unless the piece crosses X). Their
-// vertical extents are dy₁ (given) and dy₀ = dy − dy₁, and each adds as the one-column case of
-// draw_row_piece with its own mean offset m₀ = (lo + xm)/2 − i, m₁ = (xm + hi)/2 − X:
-//   acc[i] += dy₀(1 − m₀),  acc[i+1] += dy₀·m₀ + dy₁(1 − m₁),  acc[i+2] += dy₁·m₁.
-// The result is continuous in dy₁, so rounding in it moves coverage by O(hi − lo) only.
-// Writes cells i..i+2 ≤ width + 2 < stride (row_cells keeps three guard cells).
 // Adds c0, c1, c2 to cells i, i + 1, i + 2 of a row (marking their blocks when kMark).
 template <bool kMark>
 inline void add_three_cells(float* row, std::uint8_t* frow, int i, float c0, float c1, float c2) {
@@ -148,6 +138,16 @@ inline void add_three_cells(float* row, std::uint8_t* frow, int i, float c0, flo
     }
 }
 
+// One in-row piece that spans at most two columns (|xb − xa| ≤ 1), drawn without a branch on
+// whether it crosses the column border: the common piece of every steep edge and of most
+// segments at small sizes.
+// With lo ≤ hi its x ends, i = ⌊lo⌋ and X = i + 1, the part [lo, xm], xm = min(hi, X), lies in
+// column i and the part [xm, hi] in column i + 1 (empty unless the piece crosses X). Their
+// vertical extents are dy₁ (given) and dy₀ = dy − dy₁, and each adds as the one-column case of
+// draw_row_piece with its own mean offset m₀ = (lo + xm)/2 − i, m₁ = (xm + hi)/2 − X:
+//   acc[i] += dy₀(1 − m₀),  acc[i+1] += dy₀·m₀ + dy₁(1 − m₁),  acc[i+2] += dy₁·m₁.
+// The result is continuous in dy₁, so rounding in it moves coverage by O(hi − lo) only.
+// Writes cells i..i+2 ≤ width + 2 < stride (row_cells keeps three guard cells).
 template <bool kMark>
 inline void add_narrow_piece(float* row, std::uint8_t* frow, int i, double lo, double xm,
                              double hi, double dy, double dy1) {
@@ -296,31 +296,28 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
         // is one, the rows around them piece by piece; x at a row border is the same formula
         // either way.
         const double inv_slope = inverse_slope(adx, ady);
+        // Rows j .. end − 1, each ending at its bottom border.
+        const auto rows_to = [&](int end) {
+            for (; j < end; ++j) {
+                const double yb = static_cast<double>(j + 1);
+                const double xb = x0 + (yb - y0) * dxdy;
+                draw_narrow_piece<kMark>(row_of(band, j), flags_of(band, j), xa, xb, yb - ya,
+                                         dir, inv_slope);
+                ya = yb;
+                xa = xb;
+            }
+        };
         if (band.steep != nullptr) {
             const int g0 = (j + kGroupRows) >> kGroupShift, g1 = jl >> kGroupShift;
             if (g0 < g1) {
-                for (const int jv = g0 << kGroupShift; j < jv; ++j) {
-                    const double yb = static_cast<double>(j + 1);
-                    const double xb = x0 + (yb - y0) * dxdy;
-                    draw_narrow_piece<kMark>(row_of(band, j), flags_of(band, j), xa, xb, yb - ya,
-                                             dir, inv_slope);
-                    ya = yb;
-                    xa = xb;
-                }
+                rows_to(g0 << kGroupShift);
                 band.steep->steep[kMark](band, g0, g1, x0, y0, dxdy, inv_slope, dir);
                 j = g1 << kGroupShift;
                 ya = static_cast<double>(j);
                 xa = x0 + (ya - y0) * dxdy;
             }
         }
-        for (; j < jl; ++j) {
-            const double yb = static_cast<double>(j + 1);
-            const double xb = x0 + (yb - y0) * dxdy;
-            draw_narrow_piece<kMark>(row_of(band, j), flags_of(band, j), xa, xb, yb - ya, dir,
-                                     inv_slope);
-            ya = yb;
-            xa = xb;
-        }
+        rows_to(jl);
         draw_narrow_piece<kMark>(row_of(band, j), flags_of(band, j), xa, x1, y1 - ya, dir,
                                  inv_slope);
         return;

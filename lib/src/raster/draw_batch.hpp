@@ -66,14 +66,15 @@ inline void draw_or_split(const Band& band, const SegmentBatch::Segment& s,
 
 }  // namespace batch_detail
 
+// Draws segments [0, n) of `b` into `band` (draw_line's preconditions for each; an odd batch
+// padded at seg[n] with a horizontal segment, which draws nothing). The halves of cut segments
+// are appended behind the queue and drawn by the same loop: two at a time, so the count stays
+// even.
 // A pair's lanes are tested together: fast = (y0 ≠ y1) ∧ (max y ≤ ⌊min y⌋ + 1) ∧ (|dx| ≤ 1);
 // then, per lane, i = ⌊lo⌋, xm = min(hi, i + 1), dy₁ = dy·(hi − xm)/|dx| (the part right of
 // the column border; 0 for a vertical piece, whose hi − xm is exactly 0) and the three cell
 // values of add_narrow_piece. (Masking the slow lanes into harmless zero updates instead of
 // branching was measured slower: all those updates then hit the same cells, one chain.)
-// Draws segments [0, n) of `b` into `band` (draw_line's preconditions for each; an odd batch
-// padded at seg[n] with a horizontal segment, which draws nothing). The halves of cut segments are
-// appended behind the queue and drawn by the same loop: two at a time, so the count stays even.
 template <bool kMark, bool kSplit>
 inline void draw_batch(const Band& band, SegmentBatch& b, int n) {
     SegmentBatch::Segment* const seg = b.seg;
