@@ -204,10 +204,7 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
         return true;
     }
     draw_path<true, false>(path, tp.data(), shift, tol, band);
-    for (int y = 0; y < box_h; y += kGroupRows)
-        sweep_group(kernels, rule, acc + (y >> kGroupShift) * stride,
-                    band.flags + (y >> kGroupShift) * flag_stride, box_w,
-                    std::min(kGroupRows, box_h - y), target.row(by0 + y) + bx0, target.stride);
+    sweep_marked_band(kernels, rule, band, target.row(by0) + bx0, target.stride);
     return true;
 }
 

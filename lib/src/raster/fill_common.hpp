@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bezel/raster.hpp"
+#include "raster/accumulate.hpp"
 #include "raster/sweep.hpp"
 
 namespace bezel::raster_detail {
@@ -58,6 +59,17 @@ inline void sweep_group(const SweepKernels& k, FillRule rule, float* acc, std::u
 inline void sweep_group(const SweepKernels& k, FillRule rule, float* acc, std::uint8_t* flags,
                         int n, int rows, float* out, std::ptrdiff_t out_stride) {
     k.f32[static_cast<int>(rule)](acc, flags, n, rows, out, out_stride);
+}
+
+// Sweeps every group of a band whose blocks are marked into its output rows, `out` the first
+// (row 0 of the band), `out_stride` apart.
+template <typename Out>
+void sweep_marked_band(const SweepKernels& k, FillRule rule, const Band& band, Out* out,
+                       std::ptrdiff_t out_stride) {
+    for (int y = 0; y < band.rows; y += kGroupRows)
+        sweep_group(k, rule, band.acc + (y >> kGroupShift) * band.stride,
+                    band.flags + (y >> kGroupShift) * band.flag_stride, band.width,
+                    std::min(kGroupRows, band.rows - y), out + y * out_stride, out_stride);
 }
 
 inline void sweep_dense(const SweepKernels& k, FillRule rule, float* acc, std::ptrdiff_t stride,

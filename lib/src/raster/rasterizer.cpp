@@ -151,11 +151,7 @@ Status Rasterizer::fill_impl(const Polylines& lines, FillRule rule, const View& 
         const rd::Band band{acc, flags_.data(), stride, flag_stride, box_w, rows,
                             rd::avx2_steep_kernels()};
         draw_band(lines, origin, bx0, y, band);
-        for (int r = 0; r < rows; r += rd::kGroupRows)
-            rd::sweep_group(kernels, rule, acc + (r >> rd::kGroupShift) * stride,
-                            flags_.data() + (r >> rd::kGroupShift) * flag_stride, box_w,
-                            std::min(rd::kGroupRows, rows - r), target.row(y + r) + bx0,
-                            target.stride);
+        rd::sweep_marked_band(kernels, rule, band, target.row(y) + bx0, target.stride);
     }
     return ok_status();
 }
