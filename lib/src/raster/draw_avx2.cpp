@@ -141,12 +141,11 @@ void stem_groups(const Band& band, int g0, int g1, int ic, double x0, double y0,
 
 namespace bezel::raster_detail {
 
-// Baseline code (outside the pragma): it runs on every CPU, to ask whether AVX2 is there.
+// Baseline code (outside the pragma): it runs on every CPU.
 const SteepKernels* avx2_steep_kernels() {
     static const SteepKernels k{{steep_groups<false>, steep_groups<true>},
                                 {stem_groups<false>, stem_groups<true>}};
-    static const bool supported = __builtin_cpu_supports("avx2");
-    return supported ? &k : nullptr;
+    return cpu_has_avx2() ? &k : nullptr;
 }
 
 }  // namespace bezel::raster_detail

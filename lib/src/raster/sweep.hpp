@@ -74,6 +74,17 @@ struct SweepKernels {
     const char* name;   // "scalar", "sse2", "avx2"
 };
 
+// Whether this CPU runs AVX2, asked once; what the AVX2 kernel tables (sweep_avx2.cpp,
+// draw_avx2.cpp) consult. Baseline code: those files include this header before their pragma.
+inline bool cpu_has_avx2() {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+    static const bool supported = __builtin_cpu_supports("avx2");
+    return supported;
+#else
+    return false;
+#endif
+}
+
 // The scalar kernels ignore the flags (they sum every cell) and serve as the reference.
 const SweepKernels& scalar_kernels();
 const SweepKernels& sse2_kernels();

@@ -144,7 +144,7 @@ void avx2_dense(float* acc, std::ptrdiff_t group_stride, int n, int rows, Out* o
 
 namespace bezel::raster_detail {
 
-// Baseline code (outside the pragma): it runs on every CPU, to ask whether AVX2 is there.
+// Baseline code (outside the pragma): it runs on every CPU.
 const SweepKernels* avx2_kernels() {
     static const SweepKernels k{
         {avx2_sweep<FillRule::NonZero, std::uint8_t>, avx2_sweep<FillRule::EvenOdd, std::uint8_t>},
@@ -152,8 +152,7 @@ const SweepKernels* avx2_kernels() {
         {avx2_dense<FillRule::NonZero, std::uint8_t>, avx2_dense<FillRule::EvenOdd, std::uint8_t>},
         {avx2_dense<FillRule::NonZero, float>, avx2_dense<FillRule::EvenOdd, float>},
         "avx2"};
-    static const bool supported = __builtin_cpu_supports("avx2");
-    return supported ? &k : nullptr;
+    return cpu_has_avx2() ? &k : nullptr;
 }
 
 }  // namespace bezel::raster_detail
