@@ -784,6 +784,52 @@ TEST(RasterKernels, VectorSteepEdgesAddTheCellsOfTheRowByRowLoop) {
     EXPECT_GT(stems, 50);
 }
 
+TEST(RasterKernels, ShallowPiecesAcrossOneBorderAddTheCellsOfTheColumnWalk) {
+    // In sparse (marked) bands, draw_line gives a shallow edge's row pieces that cross at most
+    // one column border to the three-cell narrow piece; dense bands still walk the columns
+    // (draw_row_piece). On random shallow edges, one row and several, both directions, the two
+    // must add the same cells within float rounding, and every block holding a delta must be
+    // marked.
+    using namespace raster_detail;
+    const int W = 70, H = 30;
+    const std::size_t cells = static_cast<std::size_t>(row_groups(H)) * group_cells(W);
+    std::vector<float> sa, sb;
+    float* a = band_cells(sa, cells);
+    float* b = band_cells(sb, cells);
+    std::vector<std::uint8_t> fa(static_cast<std::size_t>(row_groups(H) * row_flag_bytes(W))),
+        fb = fa;
+    const Band marked{a, fa.data(), group_cells(W), row_flag_bytes(W), W, H, nullptr};
+    const Band dense{b, fb.data(), group_cells(W), row_flag_bytes(W), W, H, nullptr};
+    std::mt19937 rng(777);
+    std::uniform_real_distribution<double> ux(0.0, W), uy(0.0, H - 1.0), u(0.0, 1.0);
+    int narrow_wide = 0;  // pieces wider than 1 that take the narrow route
+    for (int trial = 0; trial < 3000; ++trial) {
+        const double y0 = uy(rng), dy = (trial % 3 == 0 ? 0.9 : 4.0) * u(rng) + 0.01;
+        const double y1 = std::min(y0 + dy, static_cast<double>(H));
+        const double dx = (std::abs(y1 - y0) + 0.01) * (1.0 + 2.0 * u(rng)) * (u(rng) < 0.5 ? -1 : 1);
+        const double x0 = ux(rng), x1 = std::clamp(x0 + dx, 0.0, static_cast<double>(W));
+        if (std::abs(x1 - x0) <= std::abs(y1 - y0)) continue;  // not shallow after the clamp
+        if (std::abs(x1 - x0) > 1.0 && std::floor(std::max(x0, x1)) - std::floor(std::min(x0, x1)) <= 1.0)
+            ++narrow_wide;
+        const bool up = trial % 2 == 1;
+        draw_line<true>(marked, up ? x1 : x0, up ? y1 : y0, up ? x0 : x1, up ? y0 : y1);
+        draw_line<false>(dense, up ? x1 : x0, up ? y1 : y0, up ? x0 : x1, up ? y0 : y1);
+        for (int y = 0; y < H; ++y) {
+            const float* ra = row_of(marked, y);
+            const float* rb = row_of(dense, y);
+            const std::uint8_t* flags = flags_of(marked, y);
+            for (int x = 0; x < row_cells(W); ++x) {
+                ASSERT_NEAR(ra[x * kCell], rb[x * kCell], 2e-5)
+                    << "trial " << trial << " row " << y << " cell " << x;
+                if (ra[x * kCell] != 0.0f) {
+                    ASSERT_EQ(flags[x >> kBlockShift], 1) << "unmarked";
+                }
+            }
+        }
+    }
+    EXPECT_GT(narrow_wide, 300);
+}
+
 TEST(RasterKernels, EdgesStartingJustAboveRowZeroKeepEveryRowBalanced) {
     // The direct route hands draw_line vertices up to 1/3 px above row 0 (balanced vertices
     // outside the control box); row 0 takes that part of every edge. If one drawing path
