@@ -725,6 +725,26 @@ TEST(RasterKernels, GroupSweepsMatchRowByRowSumsOnRandomGroups) {
     }
 }
 
+// Two empty W × H bands (cells and flags) for drawing the same edges two ways, with the given
+// steep-edge kernels (null: every row drawn one by one).
+struct BandPair {
+    std::vector<float> sa, sb;
+    std::vector<std::uint8_t> fa, fb;
+    std::size_t cells;
+    raster_detail::Band first, second;
+    BandPair(int W, int H, const raster_detail::SteepKernels* ka,
+             const raster_detail::SteepKernels* kb)
+        : fa(static_cast<std::size_t>(raster_detail::row_groups(H) * raster_detail::row_flag_bytes(W))),
+          fb(fa.size()),
+          cells(static_cast<std::size_t>(raster_detail::row_groups(H)) * raster_detail::group_cells(W)),
+          first{raster_detail::band_cells(sa, cells), fa.data(), raster_detail::group_cells(W),
+                raster_detail::row_flag_bytes(W), W, H, ka},
+          second{raster_detail::band_cells(sb, cells), fb.data(), raster_detail::group_cells(W),
+                 raster_detail::row_flag_bytes(W), W, H, kb} {}
+    BandPair(const BandPair&) = delete;
+    BandPair& operator=(const BandPair&) = delete;
+};
+
 TEST(RasterKernels, VectorSteepEdgesAddTheCellsOfTheRowByRowLoop) {
     // Long steep edges and stems cross whole groups of rows, which draw_line hands to the AVX2
     // kernels (draw_avx2.cpp). Drawn into a band with the kernels and into one without, every
@@ -736,14 +756,14 @@ TEST(RasterKernels, VectorSteepEdgesAddTheCellsOfTheRowByRowLoop) {
     const SteepKernels* k = avx2_steep_kernels();
     if (k == nullptr) GTEST_SKIP() << "no AVX2 on this CPU";
     const int W = 90, H = 120;
-    const std::size_t cells = static_cast<std::size_t>(row_groups(H)) * group_cells(W);
-    std::vector<float> sa, sb;
-    float* a = band_cells(sa, cells);
-    float* b = band_cells(sb, cells);
-    std::vector<std::uint8_t> fa(static_cast<std::size_t>(row_groups(H) * row_flag_bytes(W))),
-        fb = fa;
-    const Band with{a, fa.data(), group_cells(W), row_flag_bytes(W), W, H, k};
-    const Band without{b, fb.data(), group_cells(W), row_flag_bytes(W), W, H, nullptr};
+    BandPair pair(W, H, k, nullptr);
+    const Band& with = pair.first;
+    const Band& without = pair.second;
+    float* const a = with.acc;
+    float* const b = without.acc;
+    const std::size_t cells = pair.cells;
+    const std::vector<std::uint8_t>& fa = pair.fa;
+    const std::vector<std::uint8_t>& fb = pair.fb;
     std::mt19937 rng(4242);
     std::uniform_real_distribution<double> ux(0.0, W), uy(0.0, H), du(-1.0, 1.0);
     int steep = 0, stems = 0;
@@ -792,14 +812,9 @@ TEST(RasterKernels, ShallowPiecesAcrossOneBorderAddTheCellsOfTheColumnWalk) {
     // marked.
     using namespace raster_detail;
     const int W = 70, H = 30;
-    const std::size_t cells = static_cast<std::size_t>(row_groups(H)) * group_cells(W);
-    std::vector<float> sa, sb;
-    float* a = band_cells(sa, cells);
-    float* b = band_cells(sb, cells);
-    std::vector<std::uint8_t> fa(static_cast<std::size_t>(row_groups(H) * row_flag_bytes(W))),
-        fb = fa;
-    const Band marked{a, fa.data(), group_cells(W), row_flag_bytes(W), W, H, nullptr};
-    const Band dense{b, fb.data(), group_cells(W), row_flag_bytes(W), W, H, nullptr};
+    BandPair pair(W, H, nullptr, nullptr);
+    const Band& marked = pair.first;
+    const Band& dense = pair.second;
     std::mt19937 rng(777);
     std::uniform_real_distribution<double> ux(0.0, W), uy(0.0, H - 1.0), u(0.0, 1.0);
     int narrow_wide = 0;  // pieces wider than 1 that take the narrow route
