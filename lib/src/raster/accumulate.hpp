@@ -333,8 +333,8 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
     // of them at 256 px; most others cross two or three) is a narrow piece: three cells, no loop,
     // 2-5 % less time a glyph at 192-512 px. In dense bands it measured 2-6 % slower at 12-48 px
     // (where such pieces are rare and the function's code is what changed), so not there.
-    const double slope = dir * (ady / adx);  // adx > ady > 0
-    const double inv_slope = ady / adx;
+    const double inv_slope = ady / adx;  // adx > ady > 0
+    const double slope = dir * inv_slope;  // signed as the row pieces' dy
     for (; j <= jl; ++j) {
         const double yb = std::min(y1, static_cast<double>(j + 1));
         // Clamped to the edge's own x range: rounding must not push an index past the band.

@@ -38,9 +38,6 @@ inline void copy_bytes(std::uint8_t* out, const std::uint8_t* src, int count) {
         copy_tail(out, src, count);
 }
 
-// A run of `count` pixels of one coverage value (floats; bytes go through fill_group_run).
-inline void fill_run(float* out, int count, float value) { std::fill(out, out + count, value); }
-
 // The group's runs [x, end) of constant coverage, one value per row; rows of value 0 are left
 // as they are (sweep_group cleared them). Bytes: the same stores for every row (a row of value 0
 // gets zeros again), so the only branches are per run, not per row: nothing to do when all eight
@@ -70,8 +67,10 @@ inline void fill_group_run(std::uint8_t* out, std::ptrdiff_t out_stride, int row
 }
 inline void fill_group_run(float* out, std::ptrdiff_t out_stride, int rows, int x, int end,
                            const float* value) {
-    for (int r = 0; r < rows; ++r)
-        if (value[r] != 0.0f) fill_run(out + r * out_stride + x, end - x, value[r]);
+    for (int r = 0; r < rows; ++r) {
+        float* row = out + r * out_stride;
+        if (value[r] != 0.0f) std::fill(row + x, row + end, value[r]);
+    }
 }
 
 // The sparse group: marked blocks are summed, the runs between them filled. The group's rows
