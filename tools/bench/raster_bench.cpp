@@ -16,7 +16,8 @@
 //             done outside the loop.
 //   agg       renderer clear + rasterizer_scanline_aa over conv_curve(path_storage) +
 //             render_scanlines_aa_solid (scanline_u8, gray8).
-// Reported: ns per glyph = min over `reps` runs of (total time over all glyphs) / glyphs, and the
+// Reported: ns per glyph = min over `reps` runs of (total time over all glyphs) / glyphs, the
+// renderers' runs interleaved (time_interleaved), and the
 // ratio FreeType time / bezel time (> 1 means bezel is faster).
 //
 // --accuracy also measures, per size, the error of bezel and FreeType against the reference:
@@ -33,6 +34,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -213,29 +215,65 @@ struct Target {
 
 int g_inner = 0;  // --inner
 
+// One renderer under test: `passes` runs over the glyph set make one timed run (≥ 20 ms, so the
+// clock's resolution is irrelevant — unless --inner fixed the count: instruction counts under
+// valgrind --tool=callgrind need the same work in every run, whatever the machine's load), and
+// `best` is the least ns per glyph over the runs so far.
+class Contender {
+public:
+    virtual ~Contender() = default;
+    // Thread CPU ns of `passes` passes over the glyphs.
+    virtual double run_ns(int passes) = 0;
+    int passes = 1;
+    double best = 1e300;
+};
+
+template <typename F>
+class ContenderOf final : public Contender {
+public:
+    ContenderOf(const std::vector<Glyph>& glyphs, F render) : glyphs_(glyphs), render_(std::move(render)) {}
+    double run_ns(int n) override {
+        const double t0 = thread_ns();
+        for (int i = 0; i < n; ++i)
+            for (const Glyph& g : glyphs_) render_(g);
+        return thread_ns() - t0;
+    }
+
+private:
+    const std::vector<Glyph>& glyphs_;
+    F render_;
+};
+
+template <typename F>
+std::unique_ptr<Contender> contender(const std::vector<Glyph>& glyphs, F render) {
+    return std::make_unique<ContenderOf<F>>(glyphs, std::move(render));
+}
+
+// Times the contenders in alternation: run r times each of them once, starting from a different
+// one each time (r mod their count). On a shared or virtual machine the speed drifts by tens of
+// percent within seconds (2026-12-02: 33 % steal time); timed one after the other, a slow
+// stretch would land on one renderer and move the ratio, while interleaved runs sample the same
+// stretches for each, and the minimum over runs keeps each one's quiet moments.
+void time_interleaved(const std::vector<std::unique_ptr<Contender>>& cs, std::size_t glyphs, int reps) {
+    for (const auto& c : cs) {
+        c->passes = g_inner > 0 ? g_inner : 1;
+        while (g_inner == 0 && c->run_ns(c->passes) < 20e6 && c->passes < (1 << 20)) c->passes *= 2;
+    }
+    const std::size_t n = cs.size();
+    for (int r = 0; r < reps; ++r)
+        for (std::size_t k = 0; k < n; ++k) {
+            Contender& c = *cs[(static_cast<std::size_t>(r) + k) % n];
+            c.best = std::min(c.best, c.run_ns(c.passes) / (double(c.passes) * double(glyphs)));
+        }
+}
+
+// ns per glyph of one renderer timed alone (the --breakdown parts).
 template <typename F>
 double time_ns_per_glyph(const std::vector<Glyph>& glyphs, int reps, F&& render) {
-    // Repeat the glyph set until one run lasts ≥ 20 ms, so the clock's resolution is irrelevant
-    // — unless --inner fixed the count: instruction counts (valgrind --tool=callgrind) need the
-    // same work in every run, whatever the machine's load.
-    int inner = g_inner > 0 ? g_inner : 1;
-    for (; g_inner == 0;) {
-        double t0 = thread_ns();
-        for (int i = 0; i < inner; ++i)
-            for (const Glyph& g : glyphs) render(g);
-        double ms = (thread_ns() - t0) * 1e-6;
-        if (ms >= 20.0 || inner >= (1 << 20)) break;
-        inner *= 2;
-    }
-    double best = 1e300;
-    for (int r = 0; r < reps; ++r) {
-        double t0 = thread_ns();
-        for (int i = 0; i < inner; ++i)
-            for (const Glyph& g : glyphs) render(g);
-        double ns = thread_ns() - t0;
-        best = std::min(best, ns / (double(inner) * double(glyphs.size())));
-    }
-    return best;
+    std::vector<std::unique_ptr<Contender>> one;
+    one.push_back(contender(glyphs, std::forward<F>(render)));
+    time_interleaved(one, glyphs.size(), reps);
+    return one[0]->best;
 }
 
 void render_freetype(FT_Library lib, const Glyph& g, unsigned char* px) {
@@ -352,14 +390,61 @@ int main(int argc, char** argv) {
             t.fit(glyphs);
             unsigned char* px = t.pixels.data();
 
-            double ft = -1, bz = -1;
+            // The renderers' runs interleave (time_interleaved); each stays -1 when left out.
+            std::vector<std::unique_ptr<Contender>> cs;
+            Contender *c_ft = nullptr, *c_bz = nullptr, *c_stb = nullptr, *c_agg = nullptr;
+            const auto add = [&](std::unique_ptr<Contender> c) {
+                cs.push_back(std::move(c));
+                return cs.back().get();
+            };
             if (opt.runs("freetype"))
-                ft = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) { render_freetype(lib, g, px); });
+                c_ft = add(contender(glyphs, [&](const Glyph& g) { render_freetype(lib, g, px); }));
             if (opt.runs("bezel"))
-                bz = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) {
+                c_bz = add(contender(glyphs, [&](const Glyph& g) {
                     (void)rast.fill_path(g.path, bezel::Affine::identity(), bezel::FillRule::NonZero,
                                          bezel::MaskView{px, g.width, g.height, g.width}, flat_opts);
-                });
+                }));
+#ifdef BEZEL_HAVE_STB
+            // stb parses its own glyph data; done once per glyph outside the timed loop.
+            std::vector<std::pair<stbtt_vertex*, int>> shapes;
+            std::size_t stb_k = 0;
+            float stb_scale = 0.0f;
+            if (f.stb_ok && opt.runs("stb")) {
+                stb_scale = stbtt_ScaleForMappingEmToPixels(&f.stb, float(size));
+                for (const Glyph& g : glyphs) {
+                    stbtt_vertex* v = nullptr;
+                    int n = stbtt_GetGlyphShape(&f.stb, int(g.gid), &v);
+                    shapes.push_back({v, n});
+                }
+                c_stb = add(contender(glyphs, [&](const Glyph& g) {
+                    const auto& s = shapes[stb_k++ % shapes.size()];
+                    stbtt__bitmap bm{g.width, g.height, g.width, px};
+                    stbtt_Rasterize(&bm, 0.35f, s.first, s.second, stb_scale, stb_scale, 0.0f, 0.0f,
+                                    g.box_x0, -g.box_y1, 1, nullptr);
+                }));
+            }
+#endif
+#ifdef BEZEL_HAVE_AGG
+            agg::rasterizer_scanline_aa<> ras;
+            agg::scanline_u8 sl;
+            if (opt.runs("agg"))
+                c_agg = add(contender(glyphs, [&](const Glyph& g) {
+                    agg::rendering_buffer rb(px, unsigned(g.width), unsigned(g.height), g.width);
+                    agg::pixfmt_gray8 pf(rb);
+                    agg::renderer_base<agg::pixfmt_gray8> rbase(pf);
+                    rbase.clear(agg::gray8(0));
+                    ras.reset();
+                    agg::conv_curve<agg::path_storage> curves(const_cast<agg::path_storage&>(g.agg_path));
+                    ras.add_path(curves);
+                    agg::render_scanlines_aa_solid(ras, sl, rbase, agg::gray8(255));
+                }));
+#endif
+            time_interleaved(cs, glyphs.size(), opt.reps);
+            const auto best = [](const Contender* c) { return c ? c->best : -1.0; };
+            const double ft = best(c_ft), bz = best(c_bz), stb = best(c_stb), agg_ns = best(c_agg);
+#ifdef BEZEL_HAVE_STB
+            for (auto& s : shapes) stbtt_FreeShape(&f.stb, s.first);
+#endif
             if (opt.breakdown) {
                 std::vector<bezel::Polylines> flat(glyphs.size());
                 for (std::size_t k = 0; k < glyphs.size(); ++k)
@@ -378,43 +463,6 @@ int main(int argc, char** argv) {
                 std::fprintf(stderr, "  breakdown %s %d px: flatten %.0f ns, fill %.0f ns, %.0f segments/glyph\n",
                              name.c_str(), size, fl, fi, double(segs) / double(flat.size()));
             }
-            double stb = -1, agg_ns = -1;
-#ifdef BEZEL_HAVE_STB
-            if (f.stb_ok && opt.runs("stb")) {
-                const float scale = stbtt_ScaleForMappingEmToPixels(&f.stb, float(size));
-                // stb parses its own glyph data; done once per glyph outside the timed loop.
-                std::vector<std::pair<stbtt_vertex*, int>> shapes;
-                for (const Glyph& g : glyphs) {
-                    stbtt_vertex* v = nullptr;
-                    int n = stbtt_GetGlyphShape(&f.stb, int(g.gid), &v);
-                    shapes.push_back({v, n});
-                }
-                std::size_t k = 0;
-                stb = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) {
-                    const auto& s = shapes[k++ % shapes.size()];
-                    stbtt__bitmap bm{g.width, g.height, g.width, px};
-                    stbtt_Rasterize(&bm, 0.35f, s.first, s.second, scale, scale, 0.0f, 0.0f,
-                                    g.box_x0, -g.box_y1, 1, nullptr);
-                });
-                for (auto& s : shapes) stbtt_FreeShape(&f.stb, s.first);
-            }
-#endif
-#ifdef BEZEL_HAVE_AGG
-            if (opt.runs("agg")) {
-                agg::rasterizer_scanline_aa<> ras;
-                agg::scanline_u8 sl;
-                agg_ns = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) {
-                    agg::rendering_buffer rb(px, unsigned(g.width), unsigned(g.height), g.width);
-                    agg::pixfmt_gray8 pf(rb);
-                    agg::renderer_base<agg::pixfmt_gray8> rbase(pf);
-                    rbase.clear(agg::gray8(0));
-                    ras.reset();
-                    agg::conv_curve<agg::path_storage> curves(const_cast<agg::path_storage&>(g.agg_path));
-                    ras.add_path(curves);
-                    agg::render_scanlines_aa_solid(ras, sl, rbase, agg::gray8(255));
-                });
-            }
-#endif
             ErrorStats eb, ef;
             if (opt.accuracy) {
                 std::vector<unsigned char> mine, theirs;
