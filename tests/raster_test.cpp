@@ -16,6 +16,7 @@
 
 #include "bezel/raster.hpp"
 #include "raster/accumulate.hpp"
+#include "raster/draw_batch.hpp"
 #include "raster/fill_common.hpp"
 #include "raster/reference.hpp"
 #include "raster/render_flatten.hpp"
@@ -802,6 +803,76 @@ TEST(RasterKernels, VectorSteepEdgesAddTheCellsOfTheRowByRowLoop) {
     }
     EXPECT_GT(steep, 50);
     EXPECT_GT(stems, 50);
+}
+
+TEST(RasterKernels, FourSegmentBatchesLeaveThePairLoopsBandBitForBit) {
+    // The direct route hands its queued segments to the AVX2 batch (draw_batch_avx2.cpp) when
+    // the CPU has it, else to the SSE2 pair loop (draw_batch.hpp). Both do the same lane
+    // operations in the same order and set aside the same segments, so on random batches of
+    // every shape (one-row pieces, pieces across one row border, stems, long and wide edges,
+    // horizontal ones, odd and even counts) the cells must match bit for bit, and so must the
+    // block flags, in all four modes (marking or not, cutting or not).
+    using namespace raster_detail;
+    const BatchKernels* k = avx2_batch_kernels();
+    if (k == nullptr) GTEST_SKIP() << "no AVX2 on this CPU";
+    const int W = 60, H = 50;
+    std::mt19937 rng(9001);
+    std::uniform_real_distribution<double> ux(0.0, W), uy(0.0, H), u(0.0, 1.0), du(-1.0, 1.0);
+    const auto clampx = [&](double x) { return std::clamp(x, 0.0, static_cast<double>(W)); };
+    const auto clampy = [&](double y) { return std::clamp(y, 0.0, static_cast<double>(H)); };
+    int fast_like = 0, drawn = 0;
+    for (int mode = 0; mode < 4; ++mode) {
+        const bool mark = mode & 1, split = mode & 2;
+        BandPair pair(W, H, avx2_steep_kernels(), avx2_steep_kernels());
+        for (int trial = 0; trial < 300; ++trial) {
+            SegmentBatch sse, four;
+            const int n = 1 + static_cast<int>(u(rng) * SegmentBatch::kSize);
+            for (int q = 0; q < n; ++q) {
+                const double x0 = ux(rng), y0 = uy(rng);
+                double x1 = x0, y1 = y0;
+                switch (static_cast<int>(u(rng) * 6)) {
+                    case 0: case 1:  // inside one row, at most 1 wide
+                        x1 = clampx(x0 + du(rng));
+                        y1 = std::min(std::floor(y0) + u(rng), static_cast<double>(H));
+                        break;
+                    case 2:  // across one row border, narrow (the cut ones)
+                        x1 = clampx(x0 + du(rng));
+                        y1 = clampy(y0 + (u(rng) < 0.5 ? -1.0 : 1.0) * (1.0 + u(rng)));
+                        break;
+                    case 3:  // a stem
+                        x1 = clampx(std::floor(x0) + u(rng));
+                        y1 = uy(rng);
+                        break;
+                    case 4:  // long or wide, any direction
+                        x1 = ux(rng);
+                        y1 = u(rng) < 0.3 ? clampy(y0 + 0.5 * du(rng)) : uy(rng);
+                        break;
+                    default:  // horizontal: draws nothing
+                        x1 = ux(rng);
+                        break;
+                }
+                if (y1 == y0 || (std::floor(std::min(y0, y1)) + 1.0 >= std::max(y0, y1) &&
+                                 std::abs(x1 - x0) <= 1.0))
+                    ++fast_like;
+                sse.seg[q] = four.seg[q] = {_mm_set_pd(y0, x0), _mm_set_pd(y1, x1)};
+            }
+            sse.seg[n] = {_mm_setzero_pd(), _mm_setzero_pd()};  // the pair loop's padding
+            drawn += n;
+            if (mark) {
+                if (split) draw_batch<true, true>(pair.first, sse, n);
+                else draw_batch<true, false>(pair.first, sse, n);
+            } else {
+                if (split) draw_batch<false, true>(pair.first, sse, n);
+                else draw_batch<false, false>(pair.first, sse, n);
+            }
+            k->draw[mark][split](pair.second, four, n);
+            for (std::size_t c = 0; c < pair.cells; ++c)
+                ASSERT_EQ(pair.first.acc[c], pair.second.acc[c])
+                    << "mode " << mode << " trial " << trial << " cell " << c;
+            ASSERT_EQ(pair.fa, pair.fb) << "mode " << mode << " trial " << trial;
+        }
+    }
+    EXPECT_GT(fast_like, drawn / 3);  // the vector lanes are exercised, not only the set-aside
 }
 
 TEST(RasterKernels, ShallowPiecesAcrossOneBorderAddTheCellsOfTheColumnWalk) {

@@ -33,11 +33,14 @@ namespace {
 // walk); into another object they cannot touch the sink's fields.
 template <bool kMark, bool kSplit>
 struct DrawSink {
-    DrawSink(const Band& b, SegmentBatch& q)
-        : band(b), batch(q), wh(_mm_set_pd(static_cast<double>(b.rows), static_cast<double>(b.width))) {}
+    DrawSink(const Band& b, SegmentBatch& q, BatchFn four)
+        : band(b), batch(q), four(four),
+          wh(_mm_set_pd(static_cast<double>(b.rows), static_cast<double>(b.width))) {}
 
     const Band& band;
     SegmentBatch& batch;
+    BatchFn four;  // the AVX2 batch, or null
+
     __m128d wh;  // (width, rows)
     __m128d first = _mm_setzero_pd(), cur = _mm_setzero_pd();
     int queued = 0;
@@ -49,9 +52,13 @@ struct DrawSink {
         if (++queued == SegmentBatch::kSize) flush();
     }
     void flush() {
-        if (queued & 1)  // pad to a pair with a horizontal segment, which draws nothing
-            batch.seg[queued] = {_mm_setzero_pd(), _mm_setzero_pd()};
-        draw_batch<kMark, kSplit>(band, batch, queued);
+        if (four != nullptr) {
+            four(band, batch, queued);
+        } else {
+            if (queued & 1)  // pad to a pair with a horizontal segment, which draws nothing
+                batch.seg[queued] = {_mm_setzero_pd(), _mm_setzero_pd()};
+            draw_batch<kMark, kSplit>(band, batch, queued);
+        }
         queued = 0;
     }
     void move(V2 p) { first = cur = clamp(p); }
@@ -70,7 +77,8 @@ struct DrawSink {
 template <bool kMark, bool kSplit>
 void draw_path(const Path& path, const Point* points, V2 shift, double tol, const Band& band) {
     SegmentBatch batch;
-    DrawSink<kMark, kSplit> sink(band, batch);
+    const BatchKernels* four = avx2_batch_kernels();
+    DrawSink<kMark, kSplit> sink(band, batch, four != nullptr ? four->draw[kMark][kSplit] : nullptr);
     walk_balanced(path.verbs(), tol,
                   [points, shift](std::size_t i, V2& p) {
                       p = V2::of(points[i]) - shift;

@@ -1,0 +1,148 @@
+// The segment batch of draw_batch.hpp four segments at a time (AVX2). Everything after the
+// pragma is compiled for AVX2 and only called after __builtin_cpu_supports("avx2") said yes; the
+// headers come first, so that their inline functions stay baseline code.
+//
+// The lane arithmetic is draw_batch's, operation for operation in the same order (no FMA: this
+// file is compiled for AVX2 only), so the band it leaves is the SSE2 loop's bit for bit, and the
+// segments it turns down go the same way (draw_or_split, then draw_lines). What changes is the
+// per-segment part: the cell index (j >> 3)·stride + (j & 7) + i·8 is computed for four lanes
+// in one integer vector, and the three values of each lane are read back from one store of each
+// vector instead of being shuffled out one by one.
+#include <cstdint>
+
+#include "raster/draw_batch.hpp"
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+
+#pragma GCC push_options
+#pragma GCC target("avx2")
+
+namespace bezel::raster_detail {
+
+namespace {
+
+// Four segments' ends, transposed to one coordinate per register: seg[k..k+3].
+struct Four {
+    __m256d x0, y0, x1, y1;
+};
+inline Four load_four(const SegmentBatch::Segment* s) {
+    const __m256d a02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(s[0].a), s[2].a, 1);
+    const __m256d a13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(s[1].a), s[3].a, 1);
+    const __m256d b02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(s[0].b), s[2].b, 1);
+    const __m256d b13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(s[1].b), s[3].b, 1);
+    return {_mm256_unpacklo_pd(a02, a13), _mm256_unpackhi_pd(a02, a13),
+            _mm256_unpacklo_pd(b02, b13), _mm256_unpackhi_pd(b02, b13)};
+}
+
+template <bool kMark, bool kSplit>
+void draw_batch_four(const Band& band, SegmentBatch& b, int n) {
+    SegmentBatch::Segment* const seg = b.seg;
+    int end = n;
+    int nslow = 0;
+    const __m256d one = _mm256_set1_pd(1.0), half = _mm256_set1_pd(0.5);
+    const __m256d tiny = _mm256_set1_pd(1e-300);
+    const __m128i stride = _mm_set1_epi32(static_cast<int>(band.stride));
+    const __m128i fstride = _mm_set1_epi32(static_cast<int>(band.flag_stride));
+    const __m128i seven = _mm_set1_epi32(kGroupRows - 1);
+    const __m128i two = _mm_set1_epi32(2);
+    for (int k = 0; k < end; k += 4) {
+        // A short tail is padded with horizontal segments, which draw nothing; they count as
+        // queued, so halves of cut segments still go behind them.
+        if (end - k < 4) {
+            for (int p = end; p < k + 4; ++p) seg[p] = {_mm_setzero_pd(), _mm_setzero_pd()};
+            end = k + 4;
+        }
+        const Four s = load_four(seg + k);
+        const __m256d ylo = _mm256_min_pd(s.y0, s.y1), yhi = _mm256_max_pd(s.y0, s.y1);
+        const __m128i j = _mm256_cvttpd_epi32(ylo);  // floor: y > −1
+        const __m256d lo = _mm256_min_pd(s.x0, s.x1), hi = _mm256_max_pd(s.x0, s.x1);
+        const __m256d w = _mm256_sub_pd(hi, lo);
+        const __m256d flat = _mm256_cmp_pd(s.y0, s.y1, _CMP_EQ_OQ);
+        const __m256d fast = _mm256_andnot_pd(
+            flat, _mm256_and_pd(_mm256_cmp_pd(yhi, _mm256_add_pd(_mm256_cvtepi32_pd(j), one),
+                                              _CMP_LE_OQ),
+                                _mm256_cmp_pd(w, one, _CMP_LE_OQ)));
+        const int mask = _mm256_movemask_pd(fast);
+        // Lanes the general code draws (stems, long or wide segments); horizontal ones draw
+        // nothing anywhere, so they are dropped here rather than set aside.
+        const int slow = ~(mask | _mm256_movemask_pd(flat)) & 15;
+        if (slow != 0) {
+            for (int l = 0; l < 4; ++l)
+                if (slow & (1 << l))
+                    batch_detail::draw_or_split<kMark, kSplit>(b, seg[k + l], end, nslow);
+            if (mask == 0) continue;
+        }
+        const __m128i i = _mm256_cvttpd_epi32(lo);
+        const __m256d X = _mm256_add_pd(_mm256_cvtepi32_pd(i), one);
+        const __m256d xm = _mm256_min_pd(hi, X);
+        const __m256d dy = _mm256_sub_pd(s.y1, s.y0);
+        const __m256d dy1 =
+            _mm256_mul_pd(dy, _mm256_div_pd(_mm256_sub_pd(hi, xm), _mm256_max_pd(w, tiny)));
+        const __m256d dy0 = _mm256_sub_pd(dy, dy1);
+        const __m256d r0 = _mm256_mul_pd(
+            dy0, _mm256_sub_pd(_mm256_mul_pd(half, _mm256_add_pd(lo, xm)), _mm256_sub_pd(X, one)));
+        const __m256d r1 =
+            _mm256_mul_pd(dy1, _mm256_sub_pd(_mm256_mul_pd(half, _mm256_add_pd(xm, hi)), X));
+        alignas(16) float c0[4], c1[4], c2[4];
+        alignas(16) int cell[4];
+        _mm_store_ps(c0, _mm256_cvtpd_ps(_mm256_sub_pd(dy0, r0)));
+        _mm_store_ps(c1, _mm256_cvtpd_ps(_mm256_add_pd(r0, _mm256_sub_pd(dy1, r1))));
+        _mm_store_ps(c2, _mm256_cvtpd_ps(r1));
+        // row_of(band, j) + i·kCell as an offset from band.acc (the band has < 2³¹ cells).
+        const __m128i group = _mm_srai_epi32(j, kGroupShift);
+        _mm_store_si128(reinterpret_cast<__m128i*>(cell),
+                        _mm_add_epi32(_mm_add_epi32(_mm_mullo_epi32(group, stride),
+                                                    _mm_and_si128(j, seven)),
+                                      _mm_slli_epi32(i, kGroupShift)));
+        alignas(16) int flag0[4], flag1[4];
+        if constexpr (kMark) {
+            const __m128i frow = _mm_mullo_epi32(group, fstride);
+            _mm_store_si128(reinterpret_cast<__m128i*>(flag0),
+                            _mm_add_epi32(frow, _mm_srai_epi32(i, kBlockShift)));
+            _mm_store_si128(reinterpret_cast<__m128i*>(flag1),
+                            _mm_add_epi32(frow, _mm_srai_epi32(_mm_add_epi32(i, two), kBlockShift)));
+        }
+        const auto add = [&](int l) {
+            float* c = band.acc + cell[l];
+            c[0] += c0[l];
+            c[kCell] += c1[l];
+            c[2 * kCell] += c2[l];
+            if constexpr (kMark) {
+                band.flags[flag0[l]] = 1;
+                band.flags[flag1[l]] = 1;
+            }
+        };
+        if (mask == 15) {
+            add(0);
+            add(1);
+            add(2);
+            add(3);
+        } else {
+            for (int l = 0; l < 4; ++l)
+                if (mask & (1 << l)) add(l);
+        }
+    }
+    batch_detail::draw_lines<kMark>(band, b.slow, nslow);
+}
+
+}  // namespace
+}  // namespace bezel::raster_detail
+#pragma GCC pop_options
+
+namespace bezel::raster_detail {
+
+// Baseline code (outside the pragma): it runs on every CPU.
+const BatchKernels* avx2_batch_kernels() {
+    static const BatchKernels k{{{draw_batch_four<false, false>, draw_batch_four<false, true>},
+                                 {draw_batch_four<true, false>, draw_batch_four<true, true>}}};
+    return cpu_has_avx2() ? &k : nullptr;
+}
+
+}  // namespace bezel::raster_detail
+
+#else
+namespace bezel::raster_detail {
+const BatchKernels* avx2_batch_kernels() { return nullptr; }
+}  // namespace bezel::raster_detail
+#endif
