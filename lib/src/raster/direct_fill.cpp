@@ -202,8 +202,11 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     if (row_blocks(box_w) <= kDenseBlocks) {
         // Cutting segments across one row border for the pair kernel (draw_batch.hpp) was
         // measured faster for boxes of 32 rows or more (3-8 % at 48-96 px) and slower below
-        // (3 % at 12-24 px) and in sparse bands (5 % at 256 px, before this condition).
-        if (box_h >= kSplitMinRows)
+        // (3 % at 12-24 px) and in sparse bands (5 % at 256 px, before this condition). The
+        // AVX2 batch cuts four lanes at once, which measured 0-6 % faster at 12-64 px than
+        // cutting only from 32 rows (10 alternating rounds, 2026-12-02), so with it every
+        // dense box cuts.
+        if (box_h >= kSplitMinRows || avx2_batch_kernels() != nullptr)
             draw_path<false, true>(path, tp.data(), shift, tol, band);
         else
             draw_path<false, false>(path, tp.data(), shift, tol, band);

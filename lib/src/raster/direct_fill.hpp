@@ -29,7 +29,8 @@
 namespace bezel::raster_detail {
 
 inline constexpr int kDenseBlocks = 6;
-// Dense boxes at least this tall cut segments that cross one row border (direct_fill.cpp).
+// Dense boxes at least this tall cut segments that cross one row border (direct_fill.cpp);
+// with the AVX2 batch, every dense box does.
 inline constexpr int kSplitMinRows = 32;
 // Largest flattening tolerance the direct route takes (vertex excursions stay under 1/3 px, see
 // direct_fill.cpp); coarser tolerances go the general route.

@@ -7,7 +7,8 @@
 // segments it turns down go the same way (draw_or_split, then draw_lines). What changes is the
 // per-segment part: the cell index (j >> 3)·stride + (j & 7) + i·8 is computed for four lanes
 // in one integer vector, and the three values of each lane are read back from one store of each
-// vector instead of being shuffled out one by one.
+// vector instead of being shuffled out one by one; and the cut of kSplit (x at the row border)
+// is computed for four lanes at once.
 #include <cstdint>
 
 #include "raster/draw_batch.hpp"
@@ -68,9 +69,36 @@ void draw_batch_four(const Band& band, SegmentBatch& b, int n) {
         // nothing anywhere, so they are dropped here rather than set aside.
         const int slow = ~(mask | _mm256_movemask_pd(flat)) & 15;
         if (slow != 0) {
-            for (int l = 0; l < 4; ++l)
-                if (slow & (1 << l))
-                    batch_detail::draw_or_split<kMark, kSplit>(b, seg[k + l], end, nslow);
+            if constexpr (kSplit) {
+                // draw_or_split's cut, its test and x at the border computed for the four lanes
+                // at once (the same operations): each cut lane's halves go behind the queue.
+                const __m256d border = _mm256_add_pd(_mm256_cvtepi32_pd(j), one);
+                const __m256d cut = _mm256_and_pd(
+                    _mm256_and_pd(_mm256_cmp_pd(yhi, border, _CMP_GT_OQ),
+                                  _mm256_cmp_pd(yhi, _mm256_add_pd(border, one), _CMP_LE_OQ)),
+                    _mm256_cmp_pd(w, one, _CMP_LE_OQ));
+                const int cuts = _mm256_movemask_pd(cut) & slow;
+                if (cuts != 0) {
+                    const __m256d xm = _mm256_add_pd(
+                        s.x0, _mm256_mul_pd(_mm256_sub_pd(border, s.y0),
+                                            _mm256_div_pd(_mm256_sub_pd(s.x1, s.x0),
+                                                          _mm256_sub_pd(s.y1, s.y0))));
+                    alignas(32) double mx[4], my[4];
+                    _mm256_store_pd(mx, xm);
+                    _mm256_store_pd(my, border);
+                    for (int l = 0; l < 4; ++l)
+                        if (cuts & (1 << l)) {
+                            const __m128d m = _mm_set_pd(my[l], mx[l]);
+                            seg[end++] = {seg[k + l].a, m};
+                            seg[end++] = {m, seg[k + l].b};
+                        }
+                }
+                for (int l = 0; l < 4; ++l)
+                    if ((slow & ~cuts) & (1 << l)) b.slow[nslow++] = seg[k + l];
+            } else {
+                for (int l = 0; l < 4; ++l)
+                    if (slow & (1 << l)) b.slow[nslow++] = seg[k + l];
+            }
             if (mask == 0) continue;
         }
         const __m128i i = _mm256_cvttpd_epi32(lo);
