@@ -809,9 +809,9 @@ TEST(RasterKernels, FourSegmentBatchesLeaveThePairLoopsBandBitForBit) {
     // The direct route hands its queued segments to the AVX2 batch (draw_batch_avx2.cpp) when
     // the CPU has it, else to the SSE2 pair loop (draw_batch.hpp). Both do the same lane
     // operations in the same order and set aside the same segments, so on random batches of
-    // every shape (one-row pieces, pieces across one row border, stems, long and wide edges,
-    // horizontal ones, odd and even counts) the cells must match bit for bit, and so must the
-    // block flags, in all four modes (marking or not, cutting or not).
+    // every shape (one-row pieces in two columns or more, pieces across one row border, stems,
+    // long and wide edges, horizontal ones, odd and even counts) the cells must match bit for
+    // bit, and so must the block flags, in all four modes (marking or not, cutting or not).
     using namespace raster_detail;
     const BatchKernels* k = avx2_batch_kernels();
     if (k == nullptr) GTEST_SKIP() << "no AVX2 on this CPU";
@@ -831,8 +831,8 @@ TEST(RasterKernels, FourSegmentBatchesLeaveThePairLoopsBandBitForBit) {
                 const double x0 = ux(rng), y0 = uy(rng);
                 double x1 = x0, y1 = y0;
                 switch (static_cast<int>(u(rng) * 6)) {
-                    case 0: case 1:  // inside one row, at most 1 wide
-                        x1 = clampx(x0 + du(rng));
+                    case 0: case 1:  // inside one row, up to 1 wide, or 2 (two columns or three)
+                        x1 = clampx(x0 + (q % 2 == 0 ? 1.0 : 2.0) * du(rng));
                         y1 = std::min(std::floor(y0) + u(rng), static_cast<double>(H));
                         break;
                     case 2:  // across one row border, narrow (the cut ones)
@@ -852,7 +852,7 @@ TEST(RasterKernels, FourSegmentBatchesLeaveThePairLoopsBandBitForBit) {
                         break;
                 }
                 if (y1 == y0 || (std::floor(std::min(y0, y1)) + 1.0 >= std::max(y0, y1) &&
-                                 std::abs(x1 - x0) <= 1.0))
+                                 std::floor(std::min(x0, x1)) + 2.0 >= std::max(x0, x1)))
                     ++fast_like;
                 sse.seg[q] = four.seg[q] = {_mm_set_pd(y0, x0), _mm_set_pd(y1, x1)};
             }

@@ -59,11 +59,13 @@ void draw_batch_four(const Band& band, SegmentBatch& b, int n) {
         const __m128i j = _mm256_cvttpd_epi32(ylo);  // floor: y > −1
         const __m256d lo = _mm256_min_pd(s.x0, s.x1), hi = _mm256_max_pd(s.x0, s.x1);
         const __m256d w = _mm256_sub_pd(hi, lo);
+        const __m128i i = _mm256_cvttpd_epi32(lo);
+        const __m256d X = _mm256_add_pd(_mm256_cvtepi32_pd(i), one);
         const __m256d flat = _mm256_cmp_pd(s.y0, s.y1, _CMP_EQ_OQ);
         const __m256d fast = _mm256_andnot_pd(
             flat, _mm256_and_pd(_mm256_cmp_pd(yhi, _mm256_add_pd(_mm256_cvtepi32_pd(j), one),
                                               _CMP_LE_OQ),
-                                _mm256_cmp_pd(w, one, _CMP_LE_OQ)));
+                                _mm256_cmp_pd(hi, _mm256_add_pd(X, one), _CMP_LE_OQ)));
         const int mask = _mm256_movemask_pd(fast);
         // Lanes the general code draws (stems, long or wide segments); horizontal ones draw
         // nothing anywhere, so they are dropped here rather than set aside.
@@ -101,8 +103,6 @@ void draw_batch_four(const Band& band, SegmentBatch& b, int n) {
             }
             if (mask == 0) continue;
         }
-        const __m128i i = _mm256_cvttpd_epi32(lo);
-        const __m256d X = _mm256_add_pd(_mm256_cvtepi32_pd(i), one);
         const __m256d xm = _mm256_min_pd(hi, X);
         const __m256d dy = _mm256_sub_pd(s.y1, s.y0);
         const __m256d dy1 =
