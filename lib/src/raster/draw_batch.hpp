@@ -77,6 +77,10 @@ inline void draw_or_split(SegmentBatch& b, const SegmentBatch::Segment& s, int& 
 // spilled its constants around it; deferred, a glyph at 12 px runs 6 % fewer instructions and
 // measured 2-15 % faster at 12-512 px (bench_raster, 8 alternating rounds each way, 2026-12-02).
 // Deferring only reorders float additions into the band.
+// Internal linkage: draw_batch_avx2.cpp calls it too, and where that file is compiled with
+// -mavx2 (clang, which ignores `#pragma GCC target`: the fuzz build) the linker must not pick its
+// copy for the baseline callers.
+namespace {
 template <bool kMark>
 [[gnu::noinline, gnu::flatten]] void draw_lines(const Band& band, const SegmentBatch::Segment* s,
                                                 int n) {
@@ -86,6 +90,7 @@ template <bool kMark>
                          _mm_cvtsd_f64(b), _mm_cvtsd_f64(_mm_unpackhi_pd(b, b)));
     }
 }
+}  // namespace
 
 }  // namespace batch_detail
 
