@@ -40,7 +40,6 @@ struct DrawSink {
     const Band& band;
     SegmentBatch& batch;
     BatchFn four;  // the AVX2 batch, or null
-
     __m128d wh;  // (width, rows)
     __m128d first = _mm_setzero_pd(), cur = _mm_setzero_pd();
     int queued = 0;
@@ -78,7 +77,8 @@ template <bool kMark, bool kSplit>
 void draw_path(const Path& path, const Point* points, V2 shift, double tol, const Band& band) {
     SegmentBatch batch;
     const BatchKernels* four = avx2_batch_kernels();
-    DrawSink<kMark, kSplit> sink(band, batch, four != nullptr ? four->draw[kMark][kSplit] : nullptr);
+    DrawSink<kMark, kSplit> sink(band, batch,
+                                 four != nullptr ? four->draw[kMark][kSplit] : nullptr);
     walk_balanced(path.verbs(), tol,
                   [points, shift](std::size_t i, V2& p) {
                       p = V2::of(points[i]) - shift;

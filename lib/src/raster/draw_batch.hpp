@@ -9,9 +9,10 @@
 // add_narrow_piece, the scalar reference), and only the cell updates are per segment.
 // With kSplit, a segment that crosses one row border and moves at most 1 in x is cut there into
 // two such pieces (at 48 px: 30 of 69 segments a glyph, two thirds of them stems); other
-// segments are set aside and drawn by draw_line after the pair loop (see draw_lines). Measured (bench_raster, alternating runs): cutting is 3-8 % faster
-// per glyph in dense boxes of 32 rows or more (48-96 px), and slower in smaller boxes (3 % at
-// 12-24 px) and in sparse bands (5 % at 256 px), so direct_fill.cpp asks for it only there.
+// segments are set aside and drawn by draw_line after the pair loop (see draw_lines). Measured
+// (bench_raster, alternating runs): cutting here is 3-8 % faster per glyph in dense boxes of 32
+// rows or more (48-96 px), and slower in smaller boxes (3 % at 12-24 px) and in sparse bands
+// (5 % at 256 px), so with this loop direct_fill.cpp asks for it only there.
 // On AVX2 CPUs the direct route uses the four-lane copy of this loop (draw_batch_avx2.cpp): the
 // same band, 9 % fewer instructions a glyph at 12 px (callgrind) and 1-10 % less time at
 // 12-512 px (bench_raster, 6 alternating rounds each way, 2026-12-02). This loop stays the
