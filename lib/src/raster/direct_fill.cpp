@@ -72,11 +72,12 @@ struct DrawSink {
     }
 };
 
-// `points` are the transformed control points, `shift` the band's top-left pixel.
+// `points` are the transformed control points, `shift` the band's top-left pixel, `four` the
+// AVX2 batch kernels (avx2_batch_kernels(), or null).
 template <bool kMark, bool kSplit>
-void draw_path(const Path& path, const Point* points, V2 shift, double tol, const Band& band) {
+void draw_path(const Path& path, const Point* points, V2 shift, double tol, const Band& band,
+               const BatchKernels* four) {
     SegmentBatch batch;
-    const BatchKernels* four = avx2_batch_kernels();
     DrawSink<kMark, kSplit> sink(band, batch,
                                  four != nullptr ? four->draw[kMark][kSplit] : nullptr);
     walk_balanced(path.verbs(), tol,
@@ -199,6 +200,7 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     const Band band{acc, scratch.flags.data(), stride, flag_stride, box_w, box_h,
                     avx2_steep_kernels()};
     const SweepKernels& kernels = best_kernels();
+    const BatchKernels* const four = avx2_batch_kernels();
     if (row_blocks(box_w) <= kDenseBlocks) {
         // Cutting segments across one row border for the pair kernel (draw_batch.hpp) was
         // measured faster for boxes of 32 rows or more (3-8 % at 48-96 px) and slower below
@@ -206,15 +208,15 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
         // AVX2 batch cuts four lanes at once, which measured 0-6 % faster at 12-64 px than
         // cutting only from 32 rows (10 alternating rounds, 2026-12-02), so with it every
         // dense box cuts.
-        if (box_h >= kSplitMinRows || avx2_batch_kernels() != nullptr)
-            draw_path<false, true>(path, tp.data(), shift, tol, band);
+        if (box_h >= kSplitMinRows || four != nullptr)
+            draw_path<false, true>(path, tp.data(), shift, tol, band, four);
         else
-            draw_path<false, false>(path, tp.data(), shift, tol, band);
+            draw_path<false, false>(path, tp.data(), shift, tol, band, four);
         sweep_dense(kernels, rule, acc, stride, box_w, box_h, target.row(by0) + bx0,
                     target.stride);
         return true;
     }
-    draw_path<true, false>(path, tp.data(), shift, tol, band);
+    draw_path<true, false>(path, tp.data(), shift, tol, band, four);
     sweep_marked_band(kernels, rule, band, target.row(by0) + bx0, target.stride);
     return true;
 }

@@ -38,8 +38,8 @@ struct SegmentBatch {
     struct Segment {
         __m128d a, b;  // (x, y)
     };
-    // and room behind them for the halves of every one cut in two, and for padding to a multiple
-    // of four (draw_batch_avx2.cpp)
+    // kSize queued segments, then room for the halves of every one cut in two and for padding
+    // to a multiple of four (draw_batch_avx2.cpp).
     Segment seg[3 * kSize + 4];
     Segment slow[kSize + 1];  // those the pair kernel turned down (the padding one included)
 };
@@ -109,15 +109,17 @@ const BatchKernels* avx2_batch_kernels();
 // are appended behind the queue and drawn by the same loop: two at a time, so the count stays
 // even.
 // A pair's lanes are tested together: fast = (y0 ≠ y1) ∧ (max y ≤ ⌊min y⌋ + 1) ∧
-// (max x ≤ ⌊min x⌋ + 2): inside one row and two columns, which add_narrow_piece draws exactly
-// whatever the width (within_two_columns; a piece ending on the far border at ⌊min x⌋ + 2 adds
-// its second column's half to the cell after it, as it should). Widths up to 1 only, as before,
+// (max x ≤ ⌊min x⌋ + 2); then, per lane, i = ⌊lo⌋, xm = min(hi, i + 1),
+// dy₁ = dy·(hi − xm)/|dx| (the part right of the column border; 0 for a vertical piece, whose
+// hi − xm is exactly 0) and the three cell values of add_narrow_piece.
+// The test is "inside one row and two columns", which add_narrow_piece draws exactly whatever
+// the width (within_two_columns; a piece ending on the far border at ⌊min x⌋ + 2 adds its
+// second column's half to the cell after it, as it should). Widths up to 1 only, as before,
 // left the one-row shallow pieces of 48-96 px to draw_line (about 9 a glyph at 64 px): taking
 // them is 4 % fewer instructions there, within noise in time (0-4 %, 2026-12-02).
-// then, per lane, i = ⌊lo⌋, xm = min(hi, i + 1), dy₁ = dy·(hi − xm)/|dx| (the part right of
-// the column border; 0 for a vertical piece, whose hi − xm is exactly 0) and the three cell
-// values of add_narrow_piece. (Masking the slow lanes into harmless zero updates instead of
-// branching was measured slower: all those updates then hit the same cells, one chain.)
+// (Masking the slow lanes into harmless zero updates instead of branching was measured slower:
+// all those updates then hit the same cells, one chain; in the four-lane batch, with each lane
+// adding its zeros to its own cells, 5-18 % slower at 12-64 px, 2026-12-02.)
 template <bool kMark, bool kSplit>
 inline void draw_batch(const Band& band, SegmentBatch& b, int n) {
     SegmentBatch::Segment* const seg = b.seg;
