@@ -115,9 +115,10 @@ struct StemCells {
     __m128 first, second;  // four rows' values for columns ic and ic + 1
 };
 
-// Full rows [r0, r1) of an edge that stays inside column ic, by groups as steep_rows: row r adds dir·(1 − m_r) and dir·m_r
-// at columns ic, ic + 1, m_r the mean of the row's x ends minus ic (the scalar stem loop of
-// draw_line, with x at each row border from the formula rather than by accumulation).
+// Full rows [r0, r1) of an edge that stays inside column ic, by groups as steep_rows: row r
+// adds dir·(1 − m_r) and dir·m_r at columns ic, ic + 1, m_r the mean of the row's x ends minus
+// ic (the scalar stem loop of draw_line, with x at each row border from the formula rather than
+// by accumulation).
 template <bool kMark>
 void stem_rows(const Band& band, int r0, int r1, int ic, double x0, double y0, double dxdy,
                double dir) {
@@ -141,11 +142,10 @@ void stem_rows(const Band& band, int r0, int r1, int ic, double x0, double y0, d
         const auto b = right(_mm256_add_pd(ya, four));
         const __m256 keep = row_mask(lanes, r0 - gtop, r1 - gtop);
         float* cell = band.acc + g * band.stride + ic * kCell;
-        _mm256_store_ps(cell, _mm256_add_ps(_mm256_load_ps(cell),
-                                            _mm256_and_ps(keep, _mm256_set_m128(b.first, a.first))));
-        _mm256_store_ps(cell + kCell,
-                        _mm256_add_ps(_mm256_load_ps(cell + kCell),
-                                      _mm256_and_ps(keep, _mm256_set_m128(b.second, a.second))));
+        const __m256 first = _mm256_and_ps(keep, _mm256_set_m128(b.first, a.first));
+        const __m256 second = _mm256_and_ps(keep, _mm256_set_m128(b.second, a.second));
+        _mm256_store_ps(cell, _mm256_add_ps(_mm256_load_ps(cell), first));
+        _mm256_store_ps(cell + kCell, _mm256_add_ps(_mm256_load_ps(cell + kCell), second));
         if constexpr (kMark) {
             std::uint8_t* f = band.flags + g * band.flag_stride;
             f[ic >> kBlockShift] = 1;

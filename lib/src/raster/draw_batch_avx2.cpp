@@ -88,11 +88,11 @@ inline void narrow_four(const Band& band, const Four& s, __m128 keep, NarrowFour
     _mm_store_ps(out.c2, _mm_and_ps(keep, _mm256_cvtpd_ps(r1)));
     // row_of(band, j) + i·kCell as an offset from band.acc (the band has < 2³¹ cells).
     const __m128i group = _mm_srai_epi32(j, kGroupShift);
-    _mm_store_si128(
-        reinterpret_cast<__m128i*>(out.cell),
-        _mm_add_epi32(_mm_add_epi32(_mm_mullo_epi32(group, _mm_set1_epi32(static_cast<int>(band.stride))),
-                                    _mm_and_si128(j, _mm_set1_epi32(kGroupRows - 1))),
-                      _mm_slli_epi32(i, kGroupShift)));
+    const __m128i row = _mm_add_epi32(
+        _mm_mullo_epi32(group, _mm_set1_epi32(static_cast<int>(band.stride))),
+        _mm_and_si128(j, _mm_set1_epi32(kGroupRows - 1)));
+    _mm_store_si128(reinterpret_cast<__m128i*>(out.cell),
+                    _mm_add_epi32(row, _mm_slli_epi32(i, kGroupShift)));
     if constexpr (kMark) {
         const __m128i frow =
             _mm_mullo_epi32(group, _mm_set1_epi32(static_cast<int>(band.flag_stride)));
