@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include "raster/sweep.hpp"
 
@@ -132,9 +133,50 @@ void avx2_sweep(float* acc, std::uint8_t* flags, int n, int rows, Out* out,
     sweep_group<Avx2Block, R>(acc, flags, n, rows, out, out_stride);
 }
 
+// A dense band at most eight pixels wide (most glyphs at 12 px) into 8-bit coverage: per group,
+// Avx2Block::sum's steps for the eight columns that are output instead of all sixteen of the
+// block (the prefix sums, coverage and packing of columns 8..15 would be thrown away), each
+// output row one 8-byte store. The block's sixteen columns are still zeroed: drawing writes up
+// to three guard cells past the width.
+template <FillRule R>
+void dense_narrow_u8(float* acc, std::ptrdiff_t group_stride, int n, int rows, std::uint8_t* out,
+                     std::ptrdiff_t os) {
+    const __m256i to_rows = _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15,
+                                             0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15);
+    for (int y = 0; y < rows; y += kGroupRows, acc += group_stride, out += kGroupRows * os) {
+        __m256 carry = _mm256_setzero_ps();
+        __m256i t[2];
+        for (int k = 0; k < 2; ++k) {
+            __m256 s[4];
+            prefix4_columns(acc + 32 * k, carry, s);
+            const __m256i q = _mm256_packus_epi16(
+                _mm256_packs_epi32(coverage8_u8<R>(s[0]), coverage8_u8<R>(s[1])),
+                _mm256_packs_epi32(coverage8_u8<R>(s[2]), coverage8_u8<R>(s[3])));
+            t[k] = _mm256_shuffle_epi8(q, to_rows);  // dword r of a lane: row r, four columns
+        }
+        zero_columns(acc, kBlock);
+        // Each 64-bit lane: one row's eight bytes, rows 0, 1 | 4, 5 and 2, 3 | 6, 7.
+        const __m256i a = _mm256_unpacklo_epi32(t[0], t[1]), b = _mm256_unpackhi_epi32(t[0], t[1]);
+        alignas(32) std::uint8_t tile[kGroupRows][8];
+        _mm_store_si128(reinterpret_cast<__m128i*>(tile[0]), _mm256_castsi256_si128(a));
+        _mm_store_si128(reinterpret_cast<__m128i*>(tile[2]), _mm256_castsi256_si128(b));
+        _mm_store_si128(reinterpret_cast<__m128i*>(tile[4]), _mm256_extracti128_si256(a, 1));
+        _mm_store_si128(reinterpret_cast<__m128i*>(tile[6]), _mm256_extracti128_si256(b, 1));
+        const int group_rows = std::min(kGroupRows, rows - y);
+        if (n == 8) {
+            for (int r = 0; r < group_rows; ++r) std::memcpy(out + r * os, tile[r], 8);
+        } else {
+            for (int r = 0; r < group_rows; ++r) copy_tail(out + r * os, tile[r], n);
+        }
+    }
+}
+
 template <FillRule R, typename Out>
 void avx2_dense(float* acc, std::ptrdiff_t group_stride, int n, int rows, Out* out,
                 std::ptrdiff_t out_stride) {
+    if constexpr (std::is_same_v<Out, std::uint8_t>) {
+        if (n <= 8) return dense_narrow_u8<R>(acc, group_stride, n, rows, out, out_stride);
+    }
     sweep_dense<Avx2Block, R>(acc, group_stride, n, rows, out, out_stride);
 }
 
