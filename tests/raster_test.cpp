@@ -951,6 +951,40 @@ TEST(RasterKernels, EdgesStartingJustAboveRowZeroKeepEveryRowBalanced) {
     }
 }
 
+TEST(RasterKernels, WangStepCountIsTheCeilingOfWangsFormula) {
+    // wang_steps counts ⌈s⌉, s = √(√dd2 · k), by compares up to 16 (two ladders) and by square
+    // roots past it; every branch must give the formula's ceiling: just below and just above
+    // each integer up to 40, at random values across the ladders and the square-root path,
+    // and 0 past kMaxSegmentsPerCurve or for NaN.
+    using namespace raster_detail;
+    const auto formula = [](double dd2, double k) {
+        return static_cast<int>(std::ceil(std::sqrt(std::sqrt(dd2) * k)));
+    };
+    for (int i = 1; i <= 40; ++i) {
+        for (double s : {i - 1e-6, i - 1e-9, i + 1e-9, i + 1e-6}) {
+            const double k = 0.75, dd2 = std::pow(s / k, 4.0) * k * k;  // √(√dd2 · k) = s
+            ASSERT_EQ(wang_steps(dd2, k), formula(dd2, k)) << "s " << s;
+        }
+    }
+    std::mt19937 rng(16);
+    std::uniform_real_distribution<double> us(0.0, 60.0), uk(0.05, 40.0);
+    int ladder = 0, second = 0, roots = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const double s = us(rng), k = uk(rng);
+        const double dd2 = std::pow(s * s / k, 2.0);
+        const int n = wang_steps(dd2, k);
+        ASSERT_EQ(n, formula(dd2, k)) << "dd2 " << dd2 << " k " << k;
+        (n <= 8 ? ladder : n <= 16 ? second : roots)++;
+    }
+    EXPECT_GT(ladder, 1000);
+    EXPECT_GT(second, 1000);
+    EXPECT_GT(roots, 1000);
+    const double cap = static_cast<double>(kMaxSegmentsPerCurve);
+    EXPECT_EQ(wang_steps(std::pow(cap * cap, 2.0), 1.0), static_cast<int>(kMaxSegmentsPerCurve));
+    EXPECT_EQ(wang_steps(std::pow((cap + 0.5) * (cap + 0.5), 2.0), 1.0), 0);
+    EXPECT_EQ(wang_steps(std::nan(""), 1.0), 0);
+}
+
 TEST(RasterKernels, DenseBandSweepsMatchRowByRowSums) {
     // The dense kernels sum every block of every group of a band in one call (no flags) and
     // write rows out_stride apart; each row must equal its running sums, and acc must end all
