@@ -77,28 +77,25 @@ inline double len2(V2 a) {
 // takes 11 steps, and 40 % of Cantarell's cubics at 12 px (62 % at 24 px) took the square roots.
 // With ⌈s⌉ by truncation past 16 as well, 0-6 % faster per glyph at 12-96 px (4 alternating
 // rounds, Sapphire Rapids), most on the cubic Cantarell (3.5-5.4 % at 12-48 px).
+// i⁴ for i = 1..16: s > i exactly when t = s⁴ > i⁴.
+inline constexpr double kStepFourth[16] = {1.0,    16.0,    81.0,    256.0,   625.0,   1296.0,
+                                           2401.0, 4096.0,  6561.0,  10000.0, 14641.0, 20736.0,
+                                           28561.0, 38416.0, 50625.0, 65536.0};
+// How many of the eight thresholds q[0..7] t exceeds.
+inline int count_over(__m128d tt, const double* q) {
+    const __m128i c01 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_loadu_pd(q)));
+    const __m128i c23 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_loadu_pd(q + 2)));
+    const __m128i c45 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_loadu_pd(q + 4)));
+    const __m128i c67 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_loadu_pd(q + 6)));
+    __m128i neg = _mm_add_epi64(_mm_add_epi64(c01, c23), _mm_add_epi64(c45, c67));
+    neg = _mm_add_epi64(neg, _mm_unpackhi_epi64(neg, neg));  // −count in the low lane
+    return -static_cast<int>(_mm_cvtsi128_si64(neg));
+}
 inline int wang_steps(double dd2, double k) {
     const double t = dd2 * (k * k);
-    if (t <= 4096.0) {  // s ≤ 8: n = 1 + #{i = 1..7 : t > i⁴} (t > 8⁴ = 4096 is false here)
-        const __m128d tt = _mm_set1_pd(t);
-        const __m128i c01 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_set_pd(16.0, 1.0)));
-        const __m128i c23 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_set_pd(256.0, 81.0)));
-        const __m128i c45 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_set_pd(1296.0, 625.0)));
-        const __m128i c67 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_set_pd(4096.0, 2401.0)));
-        __m128i neg = _mm_add_epi64(_mm_add_epi64(c01, c23), _mm_add_epi64(c45, c67));
-        neg = _mm_add_epi64(neg, _mm_unpackhi_epi64(neg, neg));  // −count in the low lane
-        return 1 - static_cast<int>(_mm_cvtsi128_si64(neg));
-    }
-    if (t <= 65536.0) {  // 8 < s ≤ 16: n = 9 + #{i = 9..15 : t > i⁴} (t > 16⁴ is false here)
-        const __m128d tt = _mm_set1_pd(t);
-        const __m128i c01 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_set_pd(10000.0, 6561.0)));
-        const __m128i c23 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_set_pd(20736.0, 14641.0)));
-        const __m128i c45 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_set_pd(38416.0, 28561.0)));
-        const __m128i c67 = _mm_castpd_si128(_mm_cmpgt_pd(tt, _mm_set_pd(65536.0, 50625.0)));
-        __m128i neg = _mm_add_epi64(_mm_add_epi64(c01, c23), _mm_add_epi64(c45, c67));
-        neg = _mm_add_epi64(neg, _mm_unpackhi_epi64(neg, neg));
-        return 9 - static_cast<int>(_mm_cvtsi128_si64(neg));
-    }
+    // In each range t exceeds every threshold below it and not its top one (8⁴, 16⁴).
+    if (t <= kStepFourth[7]) return 1 + count_over(_mm_set1_pd(t), kStepFourth);
+    if (t <= kStepFourth[15]) return 9 + count_over(_mm_set1_pd(t), kStepFourth + 8);
     const double s = std::sqrt(std::sqrt(dd2) * k);
     if (!(s <= static_cast<double>(kMaxSegmentsPerCurve))) return 0;
     const int i = static_cast<int>(s);  // ⌈s⌉: 0 ≤ s ≤ the cap here
