@@ -56,6 +56,22 @@ inline void zero_columns(float* acc, int columns) {
     for (int c = 0; c < columns; ++c) _mm256_store_ps(acc + 8 * c, _mm256_setzero_ps());
 }
 
+// Four columns of a group (acc, eight rows each) prefix-summed onto `carry` and turned into
+// 8-bit coverage, as one vector whose dword r of each 128-bit lane is row r's four bytes (rows
+// 0-3 in the low lane, 4-7 in the high one): the packs leave the bytes column-major
+// (c₀r₀ c₀r₁ c₀r₂ c₀r₃ c₁r₀ …) and a byte shuffle makes each dword one row.
+template <FillRule R>
+inline __m256i four_columns_u8(const float* acc, __m256& carry) {
+    const __m256i to_rows = _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15,
+                                             0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15);
+    __m256 s[4];
+    prefix4_columns(acc, carry, s);
+    const __m256i q = _mm256_packus_epi16(
+        _mm256_packs_epi32(coverage8_u8<R>(s[0]), coverage8_u8<R>(s[1])),
+        _mm256_packs_epi32(coverage8_u8<R>(s[2]), coverage8_u8<R>(s[3])));
+    return _mm256_shuffle_epi8(q, to_rows);
+}
+
 struct Avx2Block {
     using Carry = __m256;  // lane r: the running sum of row r
     static Carry zero() { return _mm256_setzero_ps(); }
@@ -71,26 +87,14 @@ struct Avx2Block {
         _mm256_storeu_ps(v, coverage8<R>(c));
     }
 
-    // 16 columns × 8 rows to bytes, rows written out. Per four columns, the packs leave in each
-    // 128-bit lane the bytes column-major (c₀r₀ c₀r₁ c₀r₂ c₀r₃ c₁r₀ …; rows 0-3 in the low lane,
-    // 4-7 in the high one); a byte shuffle makes each dword one row's four columns, and two
+    // 16 columns × 8 rows to bytes, rows written out: four_columns_u8 per four columns, then two
     // rounds of unpacks gather a row's sixteen columns (low lane: row r, high lane: row r + 4).
     // 24 shuffles per 128 pixels in all.
     template <FillRule R>
     static void sum(float* acc, Carry& carry, std::uint8_t* out, std::ptrdiff_t os, int count,
                     int rows) {
-        const __m256i to_rows = _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11,
-                                                 15, 0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7,
-                                                 11, 15);
         __m256i t[4];
-        for (int k = 0; k < 4; ++k) {
-            __m256 s[4];
-            prefix4_columns(acc + 32 * k, carry, s);
-            const __m256i q = _mm256_packus_epi16(
-                _mm256_packs_epi32(coverage8_u8<R>(s[0]), coverage8_u8<R>(s[1])),
-                _mm256_packs_epi32(coverage8_u8<R>(s[2]), coverage8_u8<R>(s[3])));
-            t[k] = _mm256_shuffle_epi8(q, to_rows);
-        }
+        for (int k = 0; k < 4; ++k) t[k] = four_columns_u8<R>(acc + 32 * k, carry);
         zero_columns(acc, kBlock);
         const __m256i a = _mm256_unpacklo_epi32(t[0], t[1]), b = _mm256_unpackhi_epi32(t[0], t[1]);
         const __m256i c = _mm256_unpacklo_epi32(t[2], t[3]), d = _mm256_unpackhi_epi32(t[2], t[3]);
@@ -141,19 +145,9 @@ void avx2_sweep(float* acc, std::uint8_t* flags, int n, int rows, Out* out,
 template <FillRule R>
 void dense_narrow_u8(float* acc, std::ptrdiff_t group_stride, int n, int rows, std::uint8_t* out,
                      std::ptrdiff_t os) {
-    const __m256i to_rows = _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15,
-                                             0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15);
     for (int y = 0; y < rows; y += kGroupRows, acc += group_stride, out += kGroupRows * os) {
         __m256 carry = _mm256_setzero_ps();
-        __m256i t[2];
-        for (int k = 0; k < 2; ++k) {
-            __m256 s[4];
-            prefix4_columns(acc + 32 * k, carry, s);
-            const __m256i q = _mm256_packus_epi16(
-                _mm256_packs_epi32(coverage8_u8<R>(s[0]), coverage8_u8<R>(s[1])),
-                _mm256_packs_epi32(coverage8_u8<R>(s[2]), coverage8_u8<R>(s[3])));
-            t[k] = _mm256_shuffle_epi8(q, to_rows);  // dword r of a lane: row r, four columns
-        }
+        const __m256i t[2] = {four_columns_u8<R>(acc, carry), four_columns_u8<R>(acc + 32, carry)};
         zero_columns(acc, kBlock);
         // Each 64-bit lane: one row's eight bytes, rows 0, 1 | 4, 5 and 2, 3 | 6, 7.
         const __m256i a = _mm256_unpacklo_epi32(t[0], t[1]), b = _mm256_unpackhi_epi32(t[0], t[1]);
