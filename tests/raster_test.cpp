@@ -1037,5 +1037,49 @@ TEST(RasterKernels, DenseBandSweepsMatchRowByRowSums) {
     }
 }
 
+TEST(RasterKernels, ByteSweepsSaturateAtFullCoverageForEveryWindingUpToTheEdgeLimit) {
+    // The AVX2 byte kernels leave the clamp to 1 to the saturating packs, so a running sum of
+    // any magnitude up to the winding bound (kMaxEdges) must still come out 255 under non-zero,
+    // and under even-odd as the parity of the winding says. Each row holds one value from the
+    // first column on, so every pixel of the row has it as its running sum.
+    using namespace raster_detail;
+    std::vector<const SweepKernels*> kernels = {&scalar_kernels(), &sse2_kernels()};
+    if (avx2_kernels()) kernels.push_back(avx2_kernels());
+    const float big = static_cast<float>(kMaxEdges);
+    const float values[2][kGroupRows] = {{big, -big, 3.0f, -2.0f, 1.0f, -1.0f, 1.5f, 0.25f},
+                                         {1000.0f, -1000.0f, 2.0f, 17.0f, -17.0f, 0.5f, -0.5f, 0.0f}};
+    for (int n : {5, 8, 16, 40}) {
+        const std::ptrdiff_t stride = group_cells(n);
+        for (const auto& vs : values) {
+            for (int rule = 0; rule < 2; ++rule) {
+                const FillRule fr = static_cast<FillRule>(rule);
+                for (const SweepKernels* k : kernels) {
+                    for (int dense = 0; dense < 2; ++dense) {
+                        std::vector<float> storage(static_cast<std::size_t>(stride) + 8, 0.0f);
+                        float* acc = band_cells(storage, static_cast<std::size_t>(stride));
+                        for (int r = 0; r < kGroupRows; ++r) acc[r] = vs[r];
+                        std::vector<std::uint8_t> flags(static_cast<std::size_t>(row_flag_bytes(n)), 0);
+                        flags[0] = 1;
+                        std::vector<std::uint8_t> out(static_cast<std::size_t>(n) * kGroupRows, 7);
+                        if (dense)
+                            k->dense_u8[rule](acc, stride, n, kGroupRows, out.data(), n);
+                        else
+                            k->u8[rule](acc, flags.data(), n, kGroupRows, out.data(), n);
+                        for (int r = 0; r < kGroupRows; ++r) {
+                            const int want = coverage_u8(vs[r], fr);  // the scalar rule
+                            if (fr == FillRule::NonZero && std::fabs(vs[r]) >= 1.0f)
+                                ASSERT_EQ(want, 255);
+                            for (int i = 0; i < n; ++i)
+                                ASSERT_EQ(int(out[r * n + i]), want)
+                                    << k->name << (dense ? " dense" : " group") << " n " << n
+                                    << " rule " << rule << " value " << vs[r];
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace bezel

@@ -28,14 +28,25 @@ inline __m256 coverage8(__m256 a) {
         __m256 q = _mm256_round_ps(_mm256_mul_ps(v, _mm256_set1_ps(0.5f)),
                                    _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
         v = _mm256_sub_ps(v, _mm256_add_ps(q, q));
-        v = _mm256_min_ps(v, _mm256_sub_ps(_mm256_set1_ps(2.0f), v));
+        // min(v, 2 − v) ≤ 1 for any v (2 − v is exact for v in [1, 2]): no clamp to 1 after it.
+        return _mm256_min_ps(v, _mm256_sub_ps(_mm256_set1_ps(2.0f), v));
     }
     return _mm256_min_ps(v, _mm256_set1_ps(1.0f));
 }
 
-// round(255·f) as eight int32 (cvtps rounds to nearest, the default MXCSR mode).
+// round(255·f) as eight int32 (cvtps rounds to nearest, the default MXCSR mode), VALID ONLY
+// THROUGH A SATURATING PACK to bytes (every caller packs with packs_epi32 then packus_epi16).
+// Non-zero skips coverage8's min(·, 1): round(255·|a|) saturates to 255 exactly when
+// min(|a|, 1) would have given 255, so the bytes are the same. |a| is at most the winding count,
+// ≤ kMaxEdges = 2²² (plus rounding), so 255·|a| < 2³¹ and the conversion cannot overflow.
+// One instruction fewer per eight pixels: 1-6 % less time per glyph at 96-256 px, within noise
+// at 12-64 px (bench_raster, 8 alternating rounds each order, Zen 4, 2026-12-02).
 template <FillRule R>
 inline __m256i coverage8_u8(__m256 a) {
+    static_assert(255.0 * 2.0 * kMaxEdges < 2147483648.0, "255·|winding| must fit an int32");
+    if constexpr (R == FillRule::NonZero)
+        return _mm256_cvtps_epi32(
+            _mm256_mul_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), a), _mm256_set1_ps(255.0f)));
     return _mm256_cvtps_epi32(_mm256_mul_ps(coverage8<R>(a), _mm256_set1_ps(255.0f)));
 }
 
