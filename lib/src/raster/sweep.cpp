@@ -4,6 +4,7 @@
 #include <emmintrin.h>
 
 #include <algorithm>
+#include <utility>
 
 #include "raster/sweep_blocks.hpp"
 
@@ -70,6 +71,14 @@ inline __m128i coverage_words(Column s) {
 struct Sse2Block {
     using Carry = Column;
     static Carry zero() { return {_mm_setzero_ps(), _mm_setzero_ps()}; }
+    // Store by store, not a loop, which GCC would make a `rep stos` memset (sweep_avx2.cpp).
+    template <int... C>
+    static void zero_stores(float* acc, std::integer_sequence<int, C...>) {
+        (_mm_store_ps(acc + 4 * C, _mm_setzero_ps()), ...);
+    }
+    static void clear(float* acc) {
+        zero_stores(acc, std::make_integer_sequence<int, kBlock * kGroupRows / 4>{});
+    }
 
     template <FillRule R>
     static void values(Carry c, std::uint8_t* v) {
@@ -95,7 +104,7 @@ struct Sse2Block {
             s[k + 3] = add(carry, add(a01, add(a2, a3)));
             carry = s[k + 3];
         }
-        for (int c = 0; c < kBlock * kGroupRows; c += 4) _mm_store_ps(acc + c, _mm_setzero_ps());
+        clear(acc);
     }
 
     // Bytes: two columns per vector (column-major), transposed to rows by four rounds of
