@@ -1067,8 +1067,9 @@ TEST(RasterKernels, ByteSweepsSaturateAtFullCoverageForEveryWindingUpToTheEdgeLi
                             k->u8[rule](acc, flags.data(), n, kGroupRows, out.data(), n);
                         for (int r = 0; r < kGroupRows; ++r) {
                             const int want = coverage_u8(vs[r], fr);  // the scalar rule
-                            if (fr == FillRule::NonZero && std::fabs(vs[r]) >= 1.0f)
+                            if (fr == FillRule::NonZero && std::fabs(vs[r]) >= 1.0f) {
                                 ASSERT_EQ(want, 255);
+                            }
                             for (int i = 0; i < n; ++i)
                                 ASSERT_EQ(int(out[r * n + i]), want)
                                     << k->name << (dense ? " dense" : " group") << " n " << n
