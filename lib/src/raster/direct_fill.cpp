@@ -165,11 +165,11 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     std::vector<Point>& tp = scratch.points;
     const bool translate = m.a == 1.0 && m.b == 0.0 && m.c == 0.0 && m.d == 1.0;
     // tp only grows (a resize per fill was a call, and zeroed what the transform overwrites).
-    const bool stored = translate || tp.size() >= src.size();
+    const bool fits = tp.size() >= src.size();
     __m128d lo, hi, nan;
     if (translate)
         transform_points<false, true>(src, m, nullptr, lo, hi, nan);
-    else if (stored)
+    else if (fits)
         transform_points<true>(src, m, tp.data(), lo, hi, nan);
     else
         transform_points<false>(src, m, nullptr, lo, hi, nan);
@@ -210,7 +210,7 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     float* const acc = band_cells(scratch.acc, cells);
     if (scratch.flags.size() < flags) scratch.flags.resize(flags, 0);
 
-    if (!stored) {
+    if (!translate && !fits) {
         tp.resize(src.size());  // the largest path so far
         transform_points<true>(src, m, tp.data(), lo, hi, nan);
     }
