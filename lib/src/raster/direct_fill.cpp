@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 #include "raster/accumulate.hpp"
 #include "raster/draw_batch.hpp"
@@ -222,6 +223,14 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
                     avx2_steep_kernels()};
     const SweepKernels& kernels = best_kernels();
     const BatchKernels* const four = avx2_batch_kernels();
+    // draw_path for a band mode, with the point source (stored or translated) chosen here.
+    const auto draw = [&](auto mark, auto split) {
+        constexpr bool kMark = decltype(mark)::value, kSplit = decltype(split)::value;
+        if (translate)
+            draw_path<kMark, kSplit, true>(path, points, offset, shift, tol, band, four);
+        else
+            draw_path<kMark, kSplit, false>(path, points, offset, shift, tol, band, four);
+    };
     if (row_blocks(box_w) <= kDenseBlocks) {
         // Cutting segments across one row border for the pair kernel (draw_batch.hpp) was
         // measured faster for boxes of 32 rows or more (3-8 % at 48-96 px) and slower below
@@ -229,26 +238,15 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
         // AVX2 batch cuts four lanes at once, which measured 0-6 % faster at 12-64 px than
         // cutting only from 32 rows (10 alternating rounds, 2026-12-02), so with it every
         // dense box cuts.
-        const bool split = box_h >= kSplitMinRows || four != nullptr;
-        if (translate) {
-            if (split)
-                draw_path<false, true, true>(path, points, offset, shift, tol, band, four);
-            else
-                draw_path<false, false, true>(path, points, offset, shift, tol, band, four);
-        } else {
-            if (split)
-                draw_path<false, true, false>(path, points, offset, shift, tol, band, four);
-            else
-                draw_path<false, false, false>(path, points, offset, shift, tol, band, four);
-        }
+        if (box_h >= kSplitMinRows || four != nullptr)
+            draw(std::false_type{}, std::true_type{});
+        else
+            draw(std::false_type{}, std::false_type{});
         sweep_dense(kernels, rule, acc, stride, box_w, box_h, target.row(by0) + bx0,
                     target.stride);
         return true;
     }
-    if (translate)
-        draw_path<true, false, true>(path, points, offset, shift, tol, band, four);
-    else
-        draw_path<true, false, false>(path, points, offset, shift, tol, band, four);
+    draw(std::true_type{}, std::false_type{});
     sweep_marked_band(kernels, rule, band, target.row(by0) + bx0, target.stride);
     return true;
 }
