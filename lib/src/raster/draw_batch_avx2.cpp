@@ -57,9 +57,10 @@ inline Four gather_four(const SegmentBatch::Segment* s, const int* idx) {
 // The cells four narrow pieces add to (draw_batch's lane arithmetic): three values and the row
 // and first column of each lane. The cell's address is then found per lane by scalar integer
 // code (add_narrow), not in the vector: on Zen 4 that measured 1-2 % faster per glyph at
-// 12-96 px (6 alternating rounds each order, 2026-12-02), though it is more instructions. The
-// vector and floating-point pipes carry nearly all of a fill's work, and these integer
-// operations then run beside them on otherwise idle ALUs.
+// 12-96 px (6 alternating rounds each order, 2026-12-02), though it is 6 % more instructions.
+// The likely reason (not confirmed: no hardware counters there) is that the vector and
+// floating-point pipes carry nearly all of a fill's work, so these integer operations run
+// beside them on otherwise idle ALUs. Measured on Zen 4 only.
 struct NarrowFour {
     alignas(16) float c0[4], c1[4], c2[4];
     alignas(16) int row[4], col[4];
