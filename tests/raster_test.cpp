@@ -16,6 +16,7 @@
 
 #include "bezel/raster.hpp"
 #include "raster/accumulate.hpp"
+#include "raster/dense_batch.hpp"
 #include "raster/draw_batch.hpp"
 #include "raster/fill_common.hpp"
 #include "raster/reference.hpp"
@@ -841,65 +842,87 @@ TEST(RasterKernels, VectorSteepEdgesAddTheCellsOfTheRowByRowLoop) {
     EXPECT_GT(stems, 50);
 }
 
+// Random batches of every shape the batch kernels sort: one-row pieces in two columns or more,
+// pieces across one row border, stems, long and wide edges, horizontal ones, odd and even
+// counts, inside [0, W] × [0, H]. Returns the count; `fast_like` counts those inside one row
+// and two columns (or horizontal).
+int random_batch(std::mt19937& rng, int W, int H, raster_detail::SegmentBatch& out,
+                 int& fast_like) {
+    using raster_detail::SegmentBatch;
+    std::uniform_real_distribution<double> ux(0.0, W), uy(0.0, H), u(0.0, 1.0), du(-1.0, 1.0);
+    const auto clampx = [&](double x) { return std::clamp(x, 0.0, static_cast<double>(W)); };
+    const auto clampy = [&](double y) { return std::clamp(y, 0.0, static_cast<double>(H)); };
+    const int n = 1 + static_cast<int>(u(rng) * SegmentBatch::kSize);
+    for (int q = 0; q < n; ++q) {
+        const double x0 = ux(rng), y0 = uy(rng);
+        double x1 = x0, y1 = y0;
+        switch (static_cast<int>(u(rng) * 6)) {
+            case 0: case 1:  // inside one row, up to 1 wide, or 2 (two columns or three)
+                x1 = clampx(x0 + (q % 2 == 0 ? 1.0 : 2.0) * du(rng));
+                y1 = std::min(std::floor(y0) + u(rng), static_cast<double>(H));
+                break;
+            case 2:  // across one row border, narrow (the cut ones)
+                x1 = clampx(x0 + du(rng));
+                y1 = clampy(y0 + (u(rng) < 0.5 ? -1.0 : 1.0) * (1.0 + u(rng)));
+                break;
+            case 3:  // a stem
+                x1 = clampx(std::floor(x0) + u(rng));
+                y1 = uy(rng);
+                break;
+            case 4:  // long or wide, any direction
+                x1 = ux(rng);
+                y1 = u(rng) < 0.3 ? clampy(y0 + 0.5 * du(rng)) : uy(rng);
+                break;
+            default:  // horizontal: draws nothing
+                x1 = ux(rng);
+                break;
+        }
+        if (y1 == y0 || (std::floor(std::min(y0, y1)) + 1.0 >= std::max(y0, y1) &&
+                         std::floor(std::min(x0, x1)) + 2.0 >= std::max(x0, x1)))
+            ++fast_like;
+        out.seg[q] = {_mm_set_pd(y0, x0), _mm_set_pd(y1, x1)};
+    }
+    out.seg[n] = {_mm_setzero_pd(), _mm_setzero_pd()};  // the pair loop's padding
+    return n;
+}
+
+// The float segments of a dense band's batch (dense_batch.hpp) from its double ones, rounded as
+// the direct route's walk rounds them.
+void to_float_segments(raster_detail::SegmentBatch& b, int n) {
+    for (int q = 0; q < n; ++q)
+        b.fseg[q] = _mm_movelh_ps(_mm_cvtpd_ps(b.seg[q].a), _mm_cvtpd_ps(b.seg[q].b));
+}
+
 TEST(RasterKernels, FourSegmentBatchesLeaveThePairLoopsBandBitForBit) {
-    // The direct route hands its queued segments to the AVX2 batch (draw_batch_avx2.cpp) when
-    // the CPU has it, else to the SSE2 pair loop (draw_batch.hpp). Both do the same lane
-    // operations in the same order and set aside the same segments, so on random batches of
-    // every shape (one-row pieces in two columns or more, pieces across one row border, stems,
-    // long and wide edges, horizontal ones, odd and even counts) the cells must match bit for
-    // bit, and so must the block flags, in all four modes (marking or not, cutting or not).
+    // The direct route hands its queued segments to the AVX2 batches (draw_batch_avx2.cpp) when
+    // the CPU has them, else to the baseline loops: for marked (sparse) bands the SSE2 pair loop
+    // (draw_batch.hpp), for dense bands the four-lane float loop (dense_batch.hpp, F4), whose
+    // AVX2 copy runs eight lanes. Each pair does the same lane operations in the same order and
+    // sets aside the same segments, so on random batches of every shape the cells must match
+    // bit for bit, and so must the block flags, in all four modes (marking or not, cutting or
+    // not).
     using namespace raster_detail;
     const BatchKernels* k = avx2_batch_kernels();
     if (k == nullptr) GTEST_SKIP() << "no AVX2 on this CPU";
     const int W = 60, H = 50;
     std::mt19937 rng(9001);
-    std::uniform_real_distribution<double> ux(0.0, W), uy(0.0, H), u(0.0, 1.0), du(-1.0, 1.0);
-    const auto clampx = [&](double x) { return std::clamp(x, 0.0, static_cast<double>(W)); };
-    const auto clampy = [&](double y) { return std::clamp(y, 0.0, static_cast<double>(H)); };
     int fast_like = 0, drawn = 0;
     for (int mode = 0; mode < 4; ++mode) {
         const bool mark = mode & 1, split = mode & 2;
         BandPair pair(W, H, avx2_steep_kernels(), avx2_steep_kernels());
         for (int trial = 0; trial < 300; ++trial) {
             SegmentBatch sse, four;
-            const int n = 1 + static_cast<int>(u(rng) * SegmentBatch::kSize);
-            for (int q = 0; q < n; ++q) {
-                const double x0 = ux(rng), y0 = uy(rng);
-                double x1 = x0, y1 = y0;
-                switch (static_cast<int>(u(rng) * 6)) {
-                    case 0: case 1:  // inside one row, up to 1 wide, or 2 (two columns or three)
-                        x1 = clampx(x0 + (q % 2 == 0 ? 1.0 : 2.0) * du(rng));
-                        y1 = std::min(std::floor(y0) + u(rng), static_cast<double>(H));
-                        break;
-                    case 2:  // across one row border, narrow (the cut ones)
-                        x1 = clampx(x0 + du(rng));
-                        y1 = clampy(y0 + (u(rng) < 0.5 ? -1.0 : 1.0) * (1.0 + u(rng)));
-                        break;
-                    case 3:  // a stem
-                        x1 = clampx(std::floor(x0) + u(rng));
-                        y1 = uy(rng);
-                        break;
-                    case 4:  // long or wide, any direction
-                        x1 = ux(rng);
-                        y1 = u(rng) < 0.3 ? clampy(y0 + 0.5 * du(rng)) : uy(rng);
-                        break;
-                    default:  // horizontal: draws nothing
-                        x1 = ux(rng);
-                        break;
-                }
-                if (y1 == y0 || (std::floor(std::min(y0, y1)) + 1.0 >= std::max(y0, y1) &&
-                                 std::floor(std::min(x0, x1)) + 2.0 >= std::max(x0, x1)))
-                    ++fast_like;
-                sse.seg[q] = four.seg[q] = {_mm_set_pd(y0, x0), _mm_set_pd(y1, x1)};
-            }
-            sse.seg[n] = {_mm_setzero_pd(), _mm_setzero_pd()};  // the pair loop's padding
+            const int n = random_batch(rng, W, H, sse, fast_like);
+            four = sse;
             drawn += n;
             if (mark) {
                 if (split) draw_batch<true, true>(pair.first, sse, n);
                 else draw_batch<true, false>(pair.first, sse, n);
             } else {
-                if (split) draw_batch<false, true>(pair.first, sse, n);
-                else draw_batch<false, false>(pair.first, sse, n);
+                to_float_segments(sse, n);
+                to_float_segments(four, n);
+                if (split) draw_dense_batch<F4, true>(pair.first, sse, n);
+                else draw_dense_batch<F4, false>(pair.first, sse, n);
             }
             k->draw[mark][split](pair.second, four, n);
             for (std::size_t c = 0; c < pair.cells; ++c)
@@ -909,6 +932,52 @@ TEST(RasterKernels, FourSegmentBatchesLeaveThePairLoopsBandBitForBit) {
         }
     }
     EXPECT_GT(fast_like, drawn / 3);  // the vector lanes are exercised, not only the set-aside
+}
+
+TEST(RasterKernels, DenseFloatBatchAddsTheDoublePairLoopsCellsWithinFloatRounding) {
+    // The dense batch works in single precision on vertices rounded to float; the SSE2 pair loop
+    // in double on the same segments is the reference. Each cell of the band must agree within
+    // the float rounding of the values added to it (a cell's deltas are bounded by the rows'
+    // cover, at most a few per cell here), and the prefix sums — the coverage — as well, with
+    // and without the cut.
+    using namespace raster_detail;
+    const int W = 60, H = 50;
+    std::mt19937 rng(4711);
+    int fast_like = 0;
+    double worst = 0.0;
+    for (int mode = 0; mode < 2; ++mode) {
+        const bool split = mode & 1;
+        BandPair pair(W, H, avx2_steep_kernels(), avx2_steep_kernels());
+        for (int trial = 0; trial < 300; ++trial) {
+            SegmentBatch dbl, flt;
+            const int n = random_batch(rng, W, H, dbl, fast_like);
+            flt = dbl;
+            to_float_segments(flt, n);
+            if (split) {
+                draw_batch<false, true>(pair.first, dbl, n);
+                draw_dense_batch<F4, true>(pair.second, flt, n);
+            } else {
+                draw_batch<false, false>(pair.first, dbl, n);
+                draw_dense_batch<F4, false>(pair.second, flt, n);
+            }
+            for (int y = 0; y < H; ++y) {
+                const float* ra = row_of(pair.first, y);
+                const float* rb = row_of(pair.second, y);
+                double sa = 0.0, sb = 0.0;
+                for (int x = 0; x < W + 2; ++x) {
+                    ASSERT_NEAR(ra[x * kCell], rb[x * kCell], 2e-5)
+                        << "split " << split << " trial " << trial << " row " << y << " cell " << x;
+                    sa += ra[x * kCell];
+                    sb += rb[x * kCell];
+                    worst = std::max(worst, std::fabs(sa - sb));
+                }
+            }
+            std::copy(pair.first.acc, pair.first.acc + pair.cells, pair.second.acc);
+        }
+    }
+    EXPECT_LT(worst, 1e-4);
+    EXPECT_GT(worst, 0.0);  // the float route is really taken: it rounds differently
+    RecordProperty("worst_coverage_difference", std::to_string(worst));
 }
 
 TEST(RasterKernels, ShallowPiecesAcrossOneBorderAddTheCellsOfTheColumnWalk) {

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "raster/accumulate.hpp"
+#include "raster/dense_batch.hpp"
 #include "raster/draw_batch.hpp"
 #include "raster/fill_common.hpp"
 #include "raster/render_flatten.hpp"
@@ -26,7 +27,9 @@ namespace {
 // Segments are queued and drawn a SegmentBatch at a time (draw_batch.hpp) rather than one
 // draw_line call per vertex: a call in the middle of the flattening loop makes the caller spill
 // its forward differences (every vector register is caller-saved), the two loops are each
-// tighter alone, and the batch draws two segments per instruction.
+// tighter alone, and the batch draws several segments per instruction. For a dense band the
+// queue holds the segments in float (dense_batch.hpp: why, and what the rounding costs); each
+// vertex is rounded once, after the clamp, and shared by its two segments.
 //
 // The queue is a separate object (draw_path's), not a member: the segment stores are vector
 // stores, which may alias anything, and into a member array they would make the compiler
@@ -43,6 +46,9 @@ struct DrawSink {
     BatchFn four;  // the AVX2 batch, or null
     __m128d wh;  // (width, rows)
     __m128d first = _mm_setzero_pd(), cur = _mm_setzero_pd();
+    // A dense band takes float segments (dense_batch.hpp): first and cur rounded, in the low
+    // half (x, y).
+    __m128 first_f = _mm_setzero_ps(), cur_f = _mm_setzero_ps();
     int queued = 0;
 
     // min(x, width), min(y, rows); the points are finite (fill_path_direct checked).
@@ -51,8 +57,17 @@ struct DrawSink {
         batch.seg[queued] = {a, b};
         if (++queued == SegmentBatch::kSize) flush();
     }
+    void push_f(__m128 a, __m128 b) {
+        batch.fseg[queued] = _mm_movelh_ps(a, b);
+        if (++queued == SegmentBatch::kSize) flush();
+    }
     void flush() {
-        if (four != nullptr) {
+        if constexpr (!kMark) {
+            if (four != nullptr)
+                four(band, batch, queued);
+            else
+                draw_dense_batch<F4, kSplit>(band, batch, queued);
+        } else if (four != nullptr) {
             four(band, batch, queued);
         } else {
             if (queued & 1)  // pad to a pair with a horizontal segment, which draws nothing
@@ -61,15 +76,29 @@ struct DrawSink {
         }
         queued = 0;
     }
-    void move(V2 p) { first = cur = clamp(p); }
+    void move(V2 p) {
+        first = cur = clamp(p);
+        if constexpr (!kMark) first_f = cur_f = _mm_cvtpd_ps(cur);
+    }
     void line(V2 p) {
         const __m128d q = clamp(p);
-        push(cur, q);
-        cur = q;
+        if constexpr (!kMark) {
+            const __m128 qf = _mm_cvtpd_ps(q);
+            push_f(cur_f, qf);
+            cur_f = qf;
+        } else {
+            push(cur, q);
+            cur = q;
+        }
     }
     void close() {
-        push(cur, first);
-        cur = first;
+        if constexpr (!kMark) {
+            push_f(cur_f, first_f);
+            cur_f = first_f;
+        } else {
+            push(cur, first);
+            cur = first;
+        }
     }
 };
 

@@ -16,10 +16,13 @@
 // On AVX2 CPUs the direct route uses the four-lane copy of this loop (draw_batch_avx2.cpp): the
 // same band, 9 % fewer instructions a glyph at 12 px (callgrind) and 1-10 % less time at
 // 12-512 px (bench_raster, 6 alternating rounds each way, 2026-12-02). This loop stays the
-// reference and the baseline.
+// reference and the baseline for marked (sparse) bands. Dense bands now take the float batch
+// of dense_batch.hpp instead, on every CPU; this loop, in double, is the reference it is
+// tested against (within float rounding).
 #pragma once
 
 #include <emmintrin.h>
+#include <xmmintrin.h>
 
 #include <algorithm>
 #include <cmath>
@@ -42,6 +45,9 @@ struct SegmentBatch {
     // to a multiple of four (draw_batch_avx2.cpp).
     Segment seg[3 * kSize + 4];
     Segment slow[kSize + 1];  // those the pair kernel turned down (the padding one included)
+    // A dense band's segments instead (dense_batch.hpp): (x0, y0, x1, y1) in float, and room to
+    // pad to a multiple of eight.
+    __m128 fseg[kSize + 8];
 };
 
 namespace batch_detail {
@@ -95,8 +101,10 @@ template <bool kMark>
 
 }  // namespace batch_detail
 
-// draw_batch compiled for AVX2, four segments a step (draw_batch_avx2.cpp): the same band bit
-// for bit. n need not be even (no padding segment); indexed [kMark][kSplit].
+// The AVX2 batches (draw_batch_avx2.cpp), indexed [kMark][kSplit]: for marked (sparse) bands
+// draw_batch four segments a step, for dense bands draw_dense_batch (dense_batch.hpp) eight float
+// segments a step from b.fseg; each the same band bit for bit as its baseline loop. n need not
+// be even (no padding segment).
 using BatchFn = void (*)(const Band& band, SegmentBatch& b, int n);
 struct BatchKernels {
     BatchFn draw[2][2];

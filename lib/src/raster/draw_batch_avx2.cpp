@@ -1,6 +1,8 @@
-// The segment batch of draw_batch.hpp four segments at a time (AVX2). Everything after the
+// The segment batches for AVX2: draw_batch.hpp's (marked bands) four segments at a time, and
+// dense_batch.hpp's (dense bands) eight float segments at a time. Everything after the
 // pragma is compiled for AVX2 and only called after __builtin_cpu_supports("avx2") said yes; the
-// headers come first, so that their inline functions stay baseline code.
+// headers come first, so that their inline functions stay baseline code — all but
+// dense_batch.hpp, included after the pragma to be compiled for AVX2 here (internal linkage).
 //
 // The lane arithmetic is draw_batch's, operation for operation in the same order (no FMA: this
 // file is compiled for AVX2 only), so the band it leaves is the SSE2 loop's bit for bit, and the
@@ -23,9 +25,58 @@
 #pragma GCC push_options
 #pragma GCC target("avx2")
 
+// Compiled here for AVX2 (internal linkage; see its header comment).
+#include "raster/dense_batch.hpp"
+
 namespace bezel::raster_detail {
 
 namespace {
+
+// dense_batch.hpp's lane policy for eight lanes of AVX2: F4's operations, eight floats each.
+struct F8 {
+    using V = __m256;
+    using I = __m256i;
+    static constexpr int kLanes = 8;
+    static V set1(float v) { return _mm256_set1_ps(v); }
+    static V add(V a, V b) { return _mm256_add_ps(a, b); }
+    static V sub(V a, V b) { return _mm256_sub_ps(a, b); }
+    static V mul(V a, V b) { return _mm256_mul_ps(a, b); }
+    static V div(V a, V b) { return _mm256_div_ps(a, b); }
+    static V min(V a, V b) { return _mm256_min_ps(a, b); }
+    static V max(V a, V b) { return _mm256_max_ps(a, b); }
+    static V cmp_le(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_LE_OS); }
+    static V cmp_gt(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_GT_OS); }
+    static V cmp_eq(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_EQ_OQ); }
+    static V bit_and(V a, V b) { return _mm256_and_ps(a, b); }
+    static V andnot(V a, V b) { return _mm256_andnot_ps(a, b); }
+    static I cvtt(V a) { return _mm256_cvttps_epi32(a); }
+    static V cvt(I a) { return _mm256_cvtepi32_ps(a); }
+    static int movemask(V a) { return _mm256_movemask_ps(a); }
+    static void store(float* p, V a) { _mm256_store_ps(p, a); }
+    static void store_int(int* p, I a) { _mm256_store_si256(reinterpret_cast<__m256i*>(p), a); }
+    // Eight (x0, y0, x1, y1) segments transposed to one coordinate per vector: lanes 0-3 from
+    // s[0..3], lanes 4-7 from s[4..7], each half as F4::transpose.
+    static __m256 pair(__m128 lo, __m128 hi) {
+        return _mm256_insertf128_ps(_mm256_castps128_ps256(lo), hi, 1);
+    }
+    static DenseSegs<F8> transpose(const __m128* s[8]) {
+        const __m256 v0 = pair(*s[0], *s[4]), v1 = pair(*s[1], *s[5]);
+        const __m256 v2 = pair(*s[2], *s[6]), v3 = pair(*s[3], *s[7]);
+        const __m256 t0 = _mm256_unpacklo_ps(v0, v1), t1 = _mm256_unpackhi_ps(v0, v1);
+        const __m256 t2 = _mm256_unpacklo_ps(v2, v3), t3 = _mm256_unpackhi_ps(v2, v3);
+        return {_mm256_shuffle_ps(t0, t2, 0x44), _mm256_shuffle_ps(t0, t2, 0xEE),
+                _mm256_shuffle_ps(t1, t3, 0x44), _mm256_shuffle_ps(t1, t3, 0xEE)};
+    }
+    static DenseSegs<F8> load(const __m128* f) {
+        const __m128* s[8] = {f, f + 1, f + 2, f + 3, f + 4, f + 5, f + 6, f + 7};
+        return transpose(s);
+    }
+    static DenseSegs<F8> gather(const __m128* f, const int* idx) {
+        const __m128* s[8] = {f + idx[0], f + idx[1], f + idx[2], f + idx[3],
+                              f + idx[4], f + idx[5], f + idx[6], f + idx[7]};
+        return transpose(s);
+    }
+};
 
 // Four segments' ends, transposed to one coordinate per register: seg[k..k+3].
 struct Four {
@@ -191,7 +242,7 @@ namespace bezel::raster_detail {
 
 // Baseline code (outside the pragma): it runs on every CPU.
 const BatchKernels* avx2_batch_kernels() {
-    static const BatchKernels k{{{draw_batch_four<false, false>, draw_batch_four<false, true>},
+    static const BatchKernels k{{{draw_dense_batch<F8, false>, draw_dense_batch<F8, true>},
                                  {draw_batch_four<true, false>, draw_batch_four<true, true>}}};
     return cpu_has_avx2() ? &k : nullptr;
 }

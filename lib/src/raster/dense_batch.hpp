@@ -1,0 +1,197 @@
+// Private: the segment batch of a DENSE band (direct_fill.cpp) in single precision, written once
+// for a lane policy and compiled twice: four lanes of SSE (baseline, every x86-64 CPU, this
+// header's own F4) and eight of AVX2 (draw_batch_avx2.cpp, which includes this header after its
+// target pragma with its own policy). Both do the same IEEE single-precision operations per
+// lane in the same order and add in the same order, so the band is the same bit for bit.
+//
+// Why single precision. In a dense box the batch's lane arithmetic (the classification of each
+// segment, the three cell values of its narrow piece, the cut at a row border) is most of a
+// glyph's vector work, and the vector / floating-point pipes are what a fill keeps busy (the
+// integer ALUs idle, see draw_batch_avx2.cpp). Eight float lanes do per instruction what four
+// double lanes did. Against the double four-lane batch it replaced (bench_raster, 8 alternating
+// rounds in each order, AMD Zen 4 guest, 2026-12-02): 6-11 % less time a glyph at 12-64 px and
+// 0-9 % at 96 px, 6 % fewer instructions at 12 and 48 px (callgrind). The four-lane baseline
+// copy against the double SSE2 pair loop it replaced (the same machine with the AVX2 batches
+// switched off): 0-5 % at 12-24 px, 11-20 % at 48-96 px.
+//
+// What rounding to float costs. The walk hands over each vertex rounded to the nearest float, so
+// the batch draws the polygon of the rounded vertices, exactly up to float arithmetic. The
+// polygon stays closed (a shared vertex rounds the same way for both its segments), so every
+// row's deltas still sum to zero past it. A vertex moves by at most half a float ulp of its band
+// coordinate, at most 2⁻²⁴ of it: a dense band is at most 93 px wide (kDenseBlocks) and at most
+// kMaxBitmapDim = 2¹⁴ rows, so the move is below 2⁻¹⁰ ≈ 1e-3 px in the tallest band and below
+// 4e-6 px in a glyph box under 64 px. A vertex moved by δ changes a pixel's coverage by at most δ
+// (the area between the two edges inside it). The cell values carry float rounding of about 2⁻²⁴ of a
+// pixel's cover each, as the float cells always did.
+//
+// Internal linkage only (an unnamed namespace): the copy compiled for AVX2 in
+// draw_batch_avx2.cpp must not be merged with a baseline copy by the linker, and that file must
+// include this header after its pragma and nowhere before it.
+#pragma once
+
+#include <emmintrin.h>
+
+#include <algorithm>
+#include <cstdint>
+
+#include "raster/draw_batch.hpp"
+
+namespace bezel::raster_detail {
+namespace {
+
+// Segments of a lane policy L, one coordinate per vector.
+template <typename L>
+struct DenseSegs {
+    typename L::V x0, y0, x1, y1;
+};
+
+// Each lane's narrow piece (draw_batch's lane arithmetic in float): three cell values, the row
+// and the first column.
+template <typename L>
+struct DensePieces {
+    alignas(32) float c0[L::kLanes], c1[L::kLanes], c2[L::kLanes];
+    alignas(32) int row[L::kLanes], col[L::kLanes];
+};
+
+// The narrow pieces of s (each inside one row and two columns, the fast test: i = ⌊lo⌋,
+// xm = min(hi, i + 1), dy₁ = dy·(hi − xm)/|dx|, and add_narrow_piece's three values). A lane that
+// fails the test gets values of no meaning, which the caller does not use.
+template <typename L>
+inline void dense_narrow(const DenseSegs<L>& s, DensePieces<L>& out) {
+    using V = typename L::V;
+    const V one = L::set1(1.0f), half = L::set1(0.5f), tiny = L::set1(1e-30f);
+    const V lo = L::min(s.x0, s.x1), hi = L::max(s.x0, s.x1);
+    const auto i = L::cvtt(lo);  // floor: lo > −1
+    const V X = L::add(L::cvt(i), one);
+    const V xm = L::min(hi, X);
+    const V dy = L::sub(s.y1, s.y0);
+    const V dy1 = L::mul(dy, L::div(L::sub(hi, xm), L::max(L::sub(hi, lo), tiny)));
+    const V dy0 = L::sub(dy, dy1);
+    const V r0 = L::mul(dy0, L::sub(L::mul(half, L::add(lo, xm)), L::sub(X, one)));
+    const V r1 = L::mul(dy1, L::sub(L::mul(half, L::add(xm, hi)), X));
+    L::store(out.c0, L::sub(dy0, r0));
+    L::store(out.c1, L::add(r0, L::sub(dy1, r1)));
+    L::store(out.c2, r1);
+    L::store_int(out.row, L::cvtt(L::min(s.y0, s.y1)));  // floor: y > −1
+    L::store_int(out.col, i);
+}
+
+template <typename L>
+inline void dense_add(const Band& band, const DensePieces<L>& v, int l) {
+    add_three_cells<false>(row_of(band, v.row[l]), nullptr, v.col[l], v.c0[l], v.c1[l], v.c2[l]);
+}
+
+// A float segment (x0, y0, x1, y1) as draw_line's double one.
+inline SegmentBatch::Segment widen(__m128 f) {
+    return {_mm_cvtps_pd(f), _mm_cvtps_pd(_mm_movehl_ps(f, f))};
+}
+
+// Draws the float segments b.fseg[0, n) into a dense band (no block flags), L::kLanes at a time.
+// A segment inside one row and two columns is one narrow piece. With kSplit one that crosses
+// one row border and moves at most 1 in x is listed and, after the others, cut there into two
+// narrow pieces, x at the border x₀ + (Y − y₀)·((x₁ − x₀)/(y₁ − y₀)); anything else (stems, long
+// or wide segments) is set aside, widened to double, for draw_lines. Horizontal segments draw
+// nothing and are dropped. Order of the adds: the narrow pieces in segment order, then the cut
+// ones segment after segment (first piece, second piece), then the set-aside ones.
+template <typename L, bool kSplit>
+void draw_dense_batch(const Band& band, SegmentBatch& b, int n) {
+    using V = typename L::V;
+    constexpr int kLanes = L::kLanes, kAll = (1 << kLanes) - 1;
+    __m128* const f = b.fseg;
+    int cut_idx[SegmentBatch::kSize + kLanes];
+    int ncut = 0, nslow = 0;
+    const V one = L::set1(1.0f);
+    // A short tail is padded with horizontal segments.
+    for (int p = n; p < ((n + kLanes - 1) & ~(kLanes - 1)); ++p) f[p] = _mm_setzero_ps();
+    for (int k = 0; k < n; k += kLanes) {
+        const DenseSegs<L> s = L::load(f + k);
+        const V ylo = L::min(s.y0, s.y1), yhi = L::max(s.y0, s.y1);
+        const V lo = L::min(s.x0, s.x1), hi = L::max(s.x0, s.x1);
+        const V X = L::add(L::cvt(L::cvtt(lo)), one);
+        const V border = L::add(L::cvt(L::cvtt(ylo)), one);
+        const V flat = L::cmp_eq(s.y0, s.y1);
+        const V fast = L::andnot(flat, L::bit_and(L::cmp_le(yhi, border),
+                                                  L::cmp_le(hi, L::add(X, one))));
+        const int mask = L::movemask(fast);
+        const int slow = ~(mask | L::movemask(flat)) & kAll;
+        if (slow != 0) {
+            int cuts = 0;
+            if constexpr (kSplit) {
+                const V cut = L::bit_and(
+                    L::bit_and(L::cmp_gt(yhi, border), L::cmp_le(yhi, L::add(border, one))),
+                    L::cmp_le(L::sub(hi, lo), one));
+                cuts = L::movemask(cut) & slow;
+                for (int l = 0; l < kLanes; ++l)
+                    if (cuts & (1 << l)) cut_idx[ncut++] = k + l;
+            }
+            for (int l = 0; l < kLanes; ++l)
+                if ((slow & ~cuts) & (1 << l)) b.slow[nslow++] = widen(f[k + l]);
+            if (mask == 0) continue;
+        }
+        DensePieces<L> v;
+        dense_narrow<L>(s, v);
+        if (mask == kAll) {
+            for (int l = 0; l < kLanes; ++l) dense_add<L>(band, v, l);
+        } else {
+            for (int l = 0; l < kLanes; ++l)
+                if (mask & (1 << l)) dense_add<L>(band, v, l);
+        }
+    }
+    if (kSplit && ncut > 0) {
+        // The last step repeats its last segment; those lanes are not added.
+        for (int p = ncut; p < ncut + kLanes - 1; ++p) cut_idx[p] = cut_idx[ncut - 1];
+        for (int c = 0; c < ncut; c += kLanes) {
+            const DenseSegs<L> s = L::gather(f, cut_idx + c);
+            const V border = L::add(L::cvt(L::cvtt(L::min(s.y0, s.y1))), one);
+            const V xm = L::add(s.x0, L::mul(L::sub(border, s.y0),
+                                             L::div(L::sub(s.x1, s.x0), L::sub(s.y1, s.y0))));
+            DensePieces<L> first, second;
+            dense_narrow<L>(DenseSegs<L>{s.x0, s.y0, xm, border}, first);
+            dense_narrow<L>(DenseSegs<L>{xm, border, s.x1, s.y1}, second);
+            const int lanes = std::min(kLanes, ncut - c);
+            for (int l = 0; l < lanes; ++l) {
+                dense_add<L>(band, first, l);
+                dense_add<L>(band, second, l);
+            }
+        }
+    }
+    batch_detail::draw_lines<false>(band, b.slow, nslow);
+}
+
+// The baseline policy: four lanes of SSE (SSE2 only).
+struct F4 {
+    using V = __m128;
+    using I = __m128i;
+    static constexpr int kLanes = 4;
+    static V set1(float v) { return _mm_set1_ps(v); }
+    static V add(V a, V b) { return _mm_add_ps(a, b); }
+    static V sub(V a, V b) { return _mm_sub_ps(a, b); }
+    static V mul(V a, V b) { return _mm_mul_ps(a, b); }
+    static V div(V a, V b) { return _mm_div_ps(a, b); }
+    static V min(V a, V b) { return _mm_min_ps(a, b); }
+    static V max(V a, V b) { return _mm_max_ps(a, b); }
+    static V cmp_le(V a, V b) { return _mm_cmple_ps(a, b); }
+    static V cmp_gt(V a, V b) { return _mm_cmpgt_ps(a, b); }
+    static V cmp_eq(V a, V b) { return _mm_cmpeq_ps(a, b); }
+    static V bit_and(V a, V b) { return _mm_and_ps(a, b); }
+    static V andnot(V a, V b) { return _mm_andnot_ps(a, b); }
+    static I cvtt(V a) { return _mm_cvttps_epi32(a); }
+    static V cvt(I a) { return _mm_cvtepi32_ps(a); }
+    static int movemask(V a) { return _mm_movemask_ps(a); }
+    static void store(float* p, V a) { _mm_store_ps(p, a); }
+    static void store_int(int* p, I a) { _mm_store_si128(reinterpret_cast<__m128i*>(p), a); }
+    // Four (x0, y0, x1, y1) segments transposed to one coordinate per vector.
+    static DenseSegs<F4> transpose(__m128 s0, __m128 s1, __m128 s2, __m128 s3) {
+        const __m128 t0 = _mm_unpacklo_ps(s0, s1), t1 = _mm_unpackhi_ps(s0, s1);
+        const __m128 t2 = _mm_unpacklo_ps(s2, s3), t3 = _mm_unpackhi_ps(s2, s3);
+        return {_mm_movelh_ps(t0, t2), _mm_movehl_ps(t2, t0), _mm_movelh_ps(t1, t3),
+                _mm_movehl_ps(t3, t1)};
+    }
+    static DenseSegs<F4> load(const __m128* f) { return transpose(f[0], f[1], f[2], f[3]); }
+    static DenseSegs<F4> gather(const __m128* f, const int* idx) {
+        return transpose(f[idx[0]], f[idx[1]], f[idx[2]], f[idx[3]]);
+    }
+};
+
+}  // namespace
+}  // namespace bezel::raster_detail
