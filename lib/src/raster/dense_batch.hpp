@@ -6,9 +6,10 @@
 //
 // Why single precision. In a dense box the batch's lane arithmetic (the classification of each
 // segment, the three cell values of its narrow piece, the cut at a row border) is most of a
-// glyph's vector work, and the vector / floating-point pipes are what a fill keeps busy (the
-// integer ALUs idle, see draw_batch_avx2.cpp). Eight float lanes do per instruction what four
-// double lanes did. Against the double four-lane batch it replaced (bench_raster, 8 alternating
+// glyph's vector work. Eight float lanes do per instruction what four double lanes did, in half
+// the loop steps, mask branches and transposes. (The motive was the inference that the vector
+// pipes are what a fill keeps busy, draw_batch_avx2.cpp; a later probe that added independent
+// vector operations per piece found them nearly free, so the gain is more likely the steps.) Against the double four-lane batch it replaced (bench_raster, 8 alternating
 // rounds in each order, AMD Zen 4 guest, 2026-12-02): 6-11 % less time a glyph at 12-64 px and
 // 0-9 % at 96 px, 6 % fewer instructions at 12 and 48 px (callgrind). The four-lane baseline
 // copy against the double SSE2 pair loop it replaced (the same machine with the AVX2 batches
