@@ -144,8 +144,8 @@ public:
     // chord), so the polyline differs from flatten()'s. When the path's pixel box is narrow (at
     // most 93 px wide: glyphs at text sizes), those vertices are rounded to float relative to
     // the box before they are drawn, which moves each by at most 2⁻²⁴ of the box's larger side
-    // (under 4e-6 px in a box under 64 px) and a pixel's coverage by no more. Errors as above, plus a
-    // transform that is not finite, and a path that would flatten to more than kMaxEdges
+    // (under 4e-6 px in a box under 64 px) and a pixel's coverage by no more. Errors as above,
+    // plus a transform that is not finite, and a path that would flatten to more than kMaxEdges
     // segments (estimated by Wang's bound before flattening, so nothing is allocated for it).
     Status fill_path(const Path& path, const Affine& transform, FillRule rule,
                      const MaskView& target,

@@ -9,10 +9,11 @@
 // glyph's vector work. Eight float lanes do per instruction what four double lanes did, in half
 // the loop steps, mask branches and transposes. (The motive was the inference that the vector
 // pipes are what a fill keeps busy, draw_batch_avx2.cpp; a later probe that added independent
-// vector operations per piece found them nearly free, so the gain is more likely the steps.) Against the double four-lane batch it replaced (bench_raster, 8 alternating
-// rounds in each order, AMD Zen 4 guest, 2026-12-02): 6-11 % less time a glyph at 12-64 px and
-// 0-9 % at 96 px, 6 % fewer instructions at 12 and 48 px (callgrind). The four-lane baseline
-// copy against the double SSE2 pair loop it replaced (the same machine with the AVX2 batches
+// vector operations per piece found them nearly free, so the gain is more likely the steps.)
+// Against the double four-lane batch it replaced (bench_raster, 8 alternating rounds in each
+// order, AMD Zen 4 guest, 2026-12-02): 6-11 % less time a glyph at 12-64 px and 0-9 % at
+// 96 px, 6 % fewer instructions at 12 and 48 px (callgrind). The four-lane baseline copy
+// against the double SSE2 pair loop it replaced (the same machine with the AVX2 batches
 // switched off): 0-5 % at 12-24 px, 11-20 % at 48-96 px.
 //
 // What rounding to float costs. The walk hands over each vertex rounded to the nearest float, so
@@ -22,8 +23,8 @@
 // coordinate, at most 2⁻²⁴ of it: a dense band is at most 93 px wide (kDenseBlocks) and at most
 // kMaxBitmapDim = 2¹⁴ rows, so the move is below 2⁻¹⁰ ≈ 1e-3 px in the tallest band and below
 // 4e-6 px in a glyph box under 64 px. A vertex moved by δ changes a pixel's coverage by at most δ
-// (the area between the two edges inside it). The cell values carry float rounding of about 2⁻²⁴ of a
-// pixel's cover each, as the float cells always did.
+// (the area between the two edges inside it). The cell values carry float rounding of about
+// 2⁻²⁴ of a pixel's cover each, as the float cells always did.
 //
 // Internal linkage only (an unnamed namespace): the copy compiled for AVX2 in
 // draw_batch_avx2.cpp must not be merged with a baseline copy by the linker, and that file must

@@ -45,9 +45,9 @@ struct DrawSink {
     SegmentBatch& batch;
     BatchFn four;  // the AVX2 batch, or null
     __m128d wh;  // (width, rows)
+    // The contour's first point and the current one: a marked band's in double, a dense band's
+    // rounded to float (dense_batch.hpp), (x, y) in the low half.
     __m128d first = _mm_setzero_pd(), cur = _mm_setzero_pd();
-    // A dense band takes float segments (dense_batch.hpp): first and cur rounded, in the low
-    // half (x, y).
     __m128 first_f = _mm_setzero_ps(), cur_f = _mm_setzero_ps();
     int queued = 0;
 
@@ -77,8 +77,10 @@ struct DrawSink {
         queued = 0;
     }
     void move(V2 p) {
-        first = cur = clamp(p);
-        if constexpr (!kMark) first_f = cur_f = _mm_cvtpd_ps(cur);
+        if constexpr (!kMark)
+            first_f = cur_f = _mm_cvtpd_ps(clamp(p));
+        else
+            first = cur = clamp(p);
     }
     void line(V2 p) {
         const __m128d q = clamp(p);
