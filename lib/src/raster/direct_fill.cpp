@@ -263,16 +263,13 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
             draw_path<kMark, kSplit, false>(path, points, offset, shift, tol, band, four);
     };
     if (row_blocks(box_w) <= kDenseBlocks) {
-        // Cutting segments across one row border for the pair kernel (draw_batch.hpp) was
-        // measured faster for boxes of 32 rows or more (3-8 % at 48-96 px) and slower below
-        // (3 % at 12-24 px) and in sparse bands (5 % at 256 px, before this condition). The
-        // AVX2 batch cuts four lanes at once, which measured 0-6 % faster at 12-64 px than
-        // cutting only from 32 rows (10 alternating rounds, 2026-12-02), so with it every
-        // dense box cuts.
-        if (box_h >= kSplitMinRows || four != nullptr)
-            draw(std::false_type{}, std::true_type{});
-        else
-            draw(std::false_type{}, std::false_type{});
+        // Every dense box cuts segments across one row border (dense_batch.hpp). With the old
+        // double pair loop on CPUs without AVX2 that was slower below 32 rows (3 % at 12-24 px),
+        // and only taller boxes cut there; the float batch cuts a whole step's lanes at once,
+        // and in its four-lane copy cutting every box measured 2-10 % faster at 12-32 px than
+        // from 32 rows (the AVX2 batches switched off, 8 alternating rounds in each order,
+        // Zen 4, 2026-12-02), as the AVX2 copy had measured before (0-6 % at 12-64 px).
+        draw(std::false_type{}, std::true_type{});
         sweep_dense(kernels, rule, acc, stride, box_w, box_h, target.row(by0) + bx0,
                     target.stride);
         return true;

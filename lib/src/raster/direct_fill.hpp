@@ -29,11 +29,6 @@
 namespace bezel::raster_detail {
 
 inline constexpr int kDenseBlocks = 6;
-// Dense boxes at least this tall cut segments that cross one row border (direct_fill.cpp);
-// with the AVX2 batch, every dense box does. (Measured with the double pair loop that drew
-// dense boxes before the float batch of dense_batch.hpp; not measured again for its four-lane
-// baseline copy.)
-inline constexpr int kSplitMinRows = 32;
 // Largest flattening tolerance the direct route takes (vertex excursions stay under 1/3 px, see
 // direct_fill.cpp); coarser tolerances go the general route.
 inline constexpr double kDirectMaxTolerancePx = 0.5;
