@@ -899,16 +899,16 @@ TEST(RasterKernels, FourSegmentBatchesLeaveThePairLoopsBandBitForBit) {
     // (draw_batch.hpp), for dense bands the four-lane float loop (dense_batch.hpp, F4), whose
     // AVX2 copy runs eight lanes. Each pair does the same lane operations in the same order and
     // sets aside the same segments, so on random batches of every shape the cells must match
-    // bit for bit, and so must the block flags, in all four modes (marking or not, cutting or
-    // not).
+    // bit for bit, and so must the block flags, in all three modes (dense, which always cuts;
+    // marked, cutting or not).
     using namespace raster_detail;
     const BatchKernels* k = avx2_batch_kernels();
     if (k == nullptr) GTEST_SKIP() << "no AVX2 on this CPU";
     const int W = 60, H = 50;
     std::mt19937 rng(9001);
     int fast_like = 0, drawn = 0;
-    for (int mode = 0; mode < 4; ++mode) {
-        const bool mark = mode & 1, split = mode & 2;
+    for (int mode = 0; mode < 3; ++mode) {
+        const bool mark = mode != 0, split = mode == 2;
         BandPair pair(W, H, avx2_steep_kernels(), avx2_steep_kernels());
         for (int trial = 0; trial < 300; ++trial) {
             SegmentBatch sse, four;
@@ -918,13 +918,13 @@ TEST(RasterKernels, FourSegmentBatchesLeaveThePairLoopsBandBitForBit) {
             if (mark) {
                 if (split) draw_batch<true, true>(pair.first, sse, n);
                 else draw_batch<true, false>(pair.first, sse, n);
+                k->marked[split](pair.second, four, n);
             } else {
                 to_float_segments(sse, n);
                 to_float_segments(four, n);
-                if (split) draw_dense_batch<F4, true>(pair.first, sse, n);
-                else draw_dense_batch<F4, false>(pair.first, sse, n);
+                draw_dense_batch<F4>(pair.first, sse, n);
+                k->dense(pair.second, four, n);
             }
-            k->draw[mark][split](pair.second, four, n);
             for (std::size_t c = 0; c < pair.cells; ++c)
                 ASSERT_EQ(pair.first.acc[c], pair.second.acc[c])
                     << "mode " << mode << " trial " << trial << " cell " << c;
@@ -938,35 +938,29 @@ TEST(RasterKernels, DenseFloatBatchAddsTheDoublePairLoopsCellsWithinFloatRoundin
     // The dense batch works in single precision on vertices rounded to float; the SSE2 pair loop
     // in double on the same segments is the reference. Each cell of the band must agree within
     // the float rounding of the values added to it (a cell's deltas are bounded by the rows'
-    // cover, at most a few per cell here), and the prefix sums — the coverage — as well, with
-    // and without the cut.
+    // cover, at most a few per cell here), and the prefix sums — the coverage — as well. Both
+    // cut segments across one row border.
     using namespace raster_detail;
     const int W = 60, H = 50;
     std::mt19937 rng(4711);
     int fast_like = 0;
     double worst = 0.0;
-    for (int mode = 0; mode < 2; ++mode) {
-        const bool split = mode & 1;
+    {
         BandPair pair(W, H, avx2_steep_kernels(), avx2_steep_kernels());
-        for (int trial = 0; trial < 300; ++trial) {
+        for (int trial = 0; trial < 600; ++trial) {
             SegmentBatch dbl, flt;
             const int n = random_batch(rng, W, H, dbl, fast_like);
             flt = dbl;
             to_float_segments(flt, n);
-            if (split) {
-                draw_batch<false, true>(pair.first, dbl, n);
-                draw_dense_batch<F4, true>(pair.second, flt, n);
-            } else {
-                draw_batch<false, false>(pair.first, dbl, n);
-                draw_dense_batch<F4, false>(pair.second, flt, n);
-            }
+            draw_batch<false, true>(pair.first, dbl, n);
+            draw_dense_batch<F4>(pair.second, flt, n);
             for (int y = 0; y < H; ++y) {
                 const float* ra = row_of(pair.first, y);
                 const float* rb = row_of(pair.second, y);
                 double sa = 0.0, sb = 0.0;
                 for (int x = 0; x < W + 2; ++x) {
                     ASSERT_NEAR(ra[x * kCell], rb[x * kCell], 2e-5)
-                        << "split " << split << " trial " << trial << " row " << y << " cell " << x;
+                        << "trial " << trial << " row " << y << " cell " << x;
                     sa += ra[x * kCell];
                     sb += rb[x * kCell];
                     worst = std::max(worst, std::fabs(sa - sb));

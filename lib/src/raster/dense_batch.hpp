@@ -89,13 +89,14 @@ inline SegmentBatch::Segment widen(__m128 f) {
 }
 
 // Draws the float segments b.fseg[0, n) into a dense band (no block flags), L::kLanes at a time.
-// A segment inside one row and two columns is one narrow piece. With kSplit one that crosses
-// one row border and moves at most 1 in x is listed and, after the others, cut there into two
+// A segment inside one row and two columns is one narrow piece. One that crosses one row
+// border and moves at most 1 in x is listed and, after the others, cut there into two
 // narrow pieces, x at the border x₀ + (Y − y₀)·((x₁ − x₀)/(y₁ − y₀)); anything else (stems, long
 // or wide segments) is set aside, widened to double, for draw_lines. Horizontal segments draw
 // nothing and are dropped. Order of the adds: the narrow pieces in segment order, then the cut
 // ones segment after segment (first piece, second piece), then the set-aside ones.
-template <typename L, bool kSplit>
+// (Every dense box cuts, on every CPU: direct_fill.cpp has the measurements.)
+template <typename L>
 void draw_dense_batch(const Band& band, SegmentBatch& b, int n) {
     using V = typename L::V;
     constexpr int kLanes = L::kLanes, kAll = (1 << kLanes) - 1;
@@ -117,15 +118,12 @@ void draw_dense_batch(const Band& band, SegmentBatch& b, int n) {
         const int mask = L::movemask(fast);
         const int slow = ~(mask | L::movemask(flat)) & kAll;
         if (slow != 0) {
-            int cuts = 0;
-            if constexpr (kSplit) {
-                const V cut = L::bit_and(
-                    L::bit_and(L::cmp_gt(yhi, border), L::cmp_le(yhi, L::add(border, one))),
-                    L::cmp_le(L::sub(hi, lo), one));
-                cuts = L::movemask(cut) & slow;
-                for (int l = 0; l < kLanes; ++l)
-                    if (cuts & (1 << l)) cut_idx[ncut++] = k + l;
-            }
+            const V cut = L::bit_and(
+                L::bit_and(L::cmp_gt(yhi, border), L::cmp_le(yhi, L::add(border, one))),
+                L::cmp_le(L::sub(hi, lo), one));
+            const int cuts = L::movemask(cut) & slow;
+            for (int l = 0; l < kLanes; ++l)
+                if (cuts & (1 << l)) cut_idx[ncut++] = k + l;
             for (int l = 0; l < kLanes; ++l)
                 if ((slow & ~cuts) & (1 << l)) b.slow[nslow++] = widen(f[k + l]);
             if (mask == 0) continue;
@@ -139,7 +137,7 @@ void draw_dense_batch(const Band& band, SegmentBatch& b, int n) {
                 if (mask & (1 << l)) dense_add<L>(band, v, l);
         }
     }
-    if (kSplit && ncut > 0) {
+    if (ncut > 0) {
         // The last step repeats its last segment; those lanes are not added.
         for (int p = ncut; p < ncut + kLanes - 1; ++p) cut_idx[p] = cut_idx[ncut - 1];
         for (int c = 0; c < ncut; c += kLanes) {

@@ -37,6 +37,7 @@ namespace {
 // walk); into another object they cannot touch the sink's fields.
 template <bool kMark, bool kSplit>
 struct DrawSink {
+    static_assert(kMark || kSplit, "a dense band always cuts (draw_dense_batch)");
     DrawSink(const Band& b, SegmentBatch& q, BatchFn four)
         : band(b), batch(q), four(four),
           wh(_mm_set_pd(static_cast<double>(b.rows), static_cast<double>(b.width))) {}
@@ -66,7 +67,7 @@ struct DrawSink {
             if (four != nullptr)
                 four(band, batch, queued);
             else
-                draw_dense_batch<F4, kSplit>(band, batch, queued);
+                draw_dense_batch<F4>(band, batch, queued);
         } else if (four != nullptr) {
             four(band, batch, queued);
         } else {
@@ -113,8 +114,8 @@ template <bool kMark, bool kSplit, bool kTranslate>
 void draw_path(const Path& path, const Point* points, V2 offset, V2 shift, double tol,
                const Band& band, const BatchKernels* four) {
     SegmentBatch batch;
-    DrawSink<kMark, kSplit> sink(band, batch,
-                                 four != nullptr ? four->draw[kMark][kSplit] : nullptr);
+    DrawSink<kMark, kSplit> sink(
+        band, batch, four == nullptr ? nullptr : kMark ? four->marked[kSplit] : four->dense);
     walk_balanced(path.verbs(), tol,
                   [points, offset, shift](std::size_t i, V2& p) {
                       if constexpr (kTranslate)

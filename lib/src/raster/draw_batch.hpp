@@ -101,13 +101,12 @@ template <bool kMark>
 
 }  // namespace batch_detail
 
-// The AVX2 batches (draw_batch_avx2.cpp), indexed [kMark][kSplit]: for marked (sparse) bands
-// draw_batch four segments a step, for dense bands draw_dense_batch (dense_batch.hpp) eight float
-// segments a step from b.fseg; each the same band bit for bit as its baseline loop. n need not
-// be even (no padding segment).
+// The AVX2 batches (draw_batch_avx2.cpp), each the same band bit for bit as its baseline loop;
+// n need not be even (no padding segment).
 using BatchFn = void (*)(const Band& band, SegmentBatch& b, int n);
 struct BatchKernels {
-    BatchFn draw[2][2];
+    BatchFn dense;      // draw_dense_batch (dense_batch.hpp), eight float segments a step
+    BatchFn marked[2];  // draw_batch for marked (sparse) bands, four a step; [kSplit]
 };
 // Null when the CPU (or the build) has no AVX2; decided once.
 const BatchKernels* avx2_batch_kernels();

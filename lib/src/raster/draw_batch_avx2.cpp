@@ -242,8 +242,8 @@ namespace bezel::raster_detail {
 
 // Baseline code (outside the pragma): it runs on every CPU.
 const BatchKernels* avx2_batch_kernels() {
-    static const BatchKernels k{{{draw_dense_batch<F8, false>, draw_dense_batch<F8, true>},
-                                 {draw_batch_four<true, false>, draw_batch_four<true, true>}}};
+    static const BatchKernels k{draw_dense_batch<F8>,
+                                {draw_batch_four<true, false>, draw_batch_four<true, true>}};
     return cpu_has_avx2() ? &k : nullptr;
 }
 
