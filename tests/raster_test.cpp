@@ -1016,34 +1016,52 @@ TEST(RasterKernels, ShallowPiecesAcrossOneBorderAddTheCellsOfTheColumnWalk) {
 }
 
 TEST(RasterKernels, EdgesStartingJustAboveRowZeroKeepEveryRowBalanced) {
-    // The direct route hands draw_line vertices up to 1/3 px above row 0 (balanced vertices
+    // The direct route hands its drawing vertices up to 1/3 px above row 0 (balanced vertices
     // outside the control box); row 0 takes that part of every edge. If one drawing path
     // clipped it instead, the deltas of row 0 would no longer add up to zero past the polygon
     // and a streak would run to the row's end. Closed polygons with such a vertex, each edge a
     // stem, a steep edge or a shallow one, long enough for the vector kernels: every row's
-    // deltas must sum to zero, with and without the kernels.
+    // deltas must sum to zero, through draw_line with and without the kernels, and through the
+    // dense float batch (dense_batch.hpp, which draws stems itself) in both lane counts.
     using namespace raster_detail;
     const int W = 40, H = 60;
     const std::size_t cells = static_cast<std::size_t>(row_groups(H)) * group_cells(W);
-    for (const SteepKernels* k : {avx2_steep_kernels(), static_cast<const SteepKernels*>(nullptr)}) {
-        const double polys[][3][2] = {
-            {{5.5, -0.25}, {5.9, 50.5}, {20.2, 44.0}},    // a stem from above row 0
-            {{5.5, -0.3}, {12.8, 47.2}, {30.1, 10.5}},    // a steep edge from above row 0
-            {{2.5, -0.05}, {38.0, 3.5}, {3.1, 40.0}},     // a shallow one
-        };
+    const BatchKernels* four = avx2_batch_kernels();
+    const double polys[][3][2] = {
+        {{5.5, -0.25}, {5.9, 50.5}, {20.2, 44.0}},    // a stem from above row 0
+        {{5.5, -0.3}, {12.8, 47.2}, {30.1, 10.5}},    // a steep edge from above row 0
+        {{2.5, -0.05}, {38.0, 3.5}, {3.1, 40.0}},     // a shallow one
+        {{7.25, 30.0}, {7.75, -0.2}, {30.0, 20.0}},   // a stem up to above row 0
+    };
+    // Routes: draw_line with the AVX2 kernels, without them, the float batch in four lanes,
+    // in eight (AVX2 only).
+    for (int route = 0; route < 4; ++route) {
+        if ((route == 0 && avx2_steep_kernels() == nullptr) || (route == 3 && four == nullptr))
+            continue;
         for (const auto& poly : polys) {
             std::vector<float> storage;
             float* acc = band_cells(storage, cells);
             std::vector<std::uint8_t> flags(static_cast<std::size_t>(row_groups(H) * row_flag_bytes(W)));
-            const Band band{acc, flags.data(), group_cells(W), row_flag_bytes(W), W, H, k};
-            for (int e = 0; e < 3; ++e)
-                draw_line<false>(band, poly[e][0], poly[e][1], poly[(e + 1) % 3][0],
-                                 poly[(e + 1) % 3][1]);
+            const Band band{acc, flags.data(), group_cells(W), row_flag_bytes(W), W, H,
+                            route == 1 ? nullptr : avx2_steep_kernels()};
+            if (route < 2) {
+                for (int e = 0; e < 3; ++e)
+                    draw_line<false>(band, poly[e][0], poly[e][1], poly[(e + 1) % 3][0],
+                                     poly[(e + 1) % 3][1]);
+            } else {
+                SegmentBatch b;
+                for (int e = 0; e < 3; ++e)
+                    b.seg[e] = {_mm_set_pd(poly[e][1], poly[e][0]),
+                                _mm_set_pd(poly[(e + 1) % 3][1], poly[(e + 1) % 3][0])};
+                to_float_segments(b, 3);
+                if (route == 2) draw_dense_batch<F4>(band, b, 3);
+                else four->dense(band, b, 3);
+            }
             for (int y = 0; y < H; ++y) {
                 double sum = 0.0;
                 for (int x = 0; x < row_cells(W); ++x) sum += row_of(band, y)[x * kCell];
-                ASSERT_NEAR(sum, 0.0, 1e-5) << "row " << y << (k ? " with" : " without")
-                                            << " kernels, polygon from y " << poly[0][1];
+                ASSERT_NEAR(sum, 0.0, 1e-5) << "row " << y << ", route " << route
+                                            << ", polygon from y " << poly[0][1];
             }
         }
     }

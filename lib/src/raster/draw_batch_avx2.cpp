@@ -53,6 +53,8 @@ struct F8 {
     static V cvt(I a) { return _mm256_cvtepi32_ps(a); }
     static int movemask(V a) { return _mm256_movemask_ps(a); }
     static void store(float* p, V a) { _mm256_store_ps(p, a); }
+    static V load_f(const float* p) { return _mm256_load_ps(p); }
+    static V iota() { return _mm256_setr_ps(0.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 7.0f); }
     static void store_int(int* p, I a) { _mm256_store_si256(reinterpret_cast<__m256i*>(p), a); }
     // Eight (x0, y0, x1, y1) segments transposed to one coordinate per vector: lanes 0-3 from
     // s[0..3], lanes 4-7 from s[4..7], each half as F4::transpose.
