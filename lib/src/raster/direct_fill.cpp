@@ -94,6 +94,25 @@ struct DrawSink {
             cur = q;
         }
     }
+    // Room for a curve's n points (render_flatten.hpp, emit): flushes first when the queue
+    // lacks it; false when n is more than a queue holds. The queue is never left full (push
+    // flushes at kSize and tests for nothing else), so a reservation keeps queued < kSize.
+    bool reserve(int n) {
+        if (n >= SegmentBatch::kSize) return false;
+        if (queued + n >= SegmentBatch::kSize) flush();
+        return true;
+    }
+    void line_reserved(V2 p) {
+        const __m128d q = clamp(p);
+        if constexpr (!kMark) {
+            const __m128 qf = _mm_cvtpd_ps(q);
+            batch.fseg[queued++] = _mm_movelh_ps(cur_f, qf);
+            cur_f = qf;
+        } else {
+            batch.seg[queued++] = {cur, q};
+            cur = q;
+        }
+    }
     void close() {
         if constexpr (!kMark) {
             push_f(cur_f, first_f);

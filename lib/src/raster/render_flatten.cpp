@@ -20,6 +20,8 @@ struct PolylineSink {
         first = p;
     }
     void line(V2 v) { out.points.push_back(v.point()); }
+    bool reserve(int) { return false; }  // push_back tests for room anyway
+    void line_reserved(V2 v) { line(v); }
     void close() {
         if (out.points.size() - contour_start < 2) {
             out.points.resize(contour_start);  // a lone move encloses nothing

@@ -58,6 +58,7 @@ inline V2 operator+(V2 a, V2 b) { return {_mm_add_pd(a.v, b.v)}; }
 inline V2 operator-(V2 a, V2 b) { return {_mm_sub_pd(a.v, b.v)}; }
 inline V2 operator*(V2 a, double s) { return {_mm_mul_pd(a.v, _mm_set1_pd(s))}; }
 inline V2 operator*(double s, V2 a) { return a * s; }
+inline V2 operator*(V2 a, V2 b) { return {_mm_mul_pd(a.v, b.v)}; }
 // x² + y², as Vec2::length_squared.
 inline double len2(V2 a) {
     const __m128d sq = _mm_mul_pd(a.v, a.v);
@@ -102,27 +103,55 @@ inline int wang_steps(double dd2, double k) {
     return i + (static_cast<double>(i) < s);
 }
 
-// h = 1/n and its powers for the forward differences. Small n (nearly every curve of a glyph)
+// h = 1/n and its powers for the forward differences, each as an (x, y) pair of equal values
+// (the operands of the packed products, loaded whole). Small n (nearly every curve of a glyph)
 // come from a table: the division would otherwise sit at the head of each curve's chain of
-// dependent operations (measured: the hottest instruction of the walk at 12 px).
+// dependent operations (measured: the hottest instruction of the walk at 12 px). The entry is
+// read in place: returned by value, GCC copied the struct through the stack and splatted each
+// power with a shuffle, ten instructions at the head of every curve.
 struct StepPowers {
-    double h, h2, h3;  // h, h·h, (h·h)·h
+    // h, h·h, (h·h)·h and the second and third differences' factors 2·(h·h), 6·((h·h)·h),
+    // each twice.
+    alignas(16) double h[2], h2[2], h3[2], h2x2[2], h3x6[2];
+    constexpr void set(int n) {
+        const double s = 1.0 / n, s2 = s * s, s3 = s2 * s;
+        h[0] = h[1] = s;
+        h2[0] = h2[1] = s2;
+        h3[0] = h3[1] = s3;
+        h2x2[0] = h2x2[1] = 2.0 * s2;
+        h3x6[0] = h3x6[1] = 6.0 * s3;
+    }
+    V2 vh() const { return {_mm_load_pd(h)}; }
+    V2 vh2() const { return {_mm_load_pd(h2)}; }
+    V2 vh3() const { return {_mm_load_pd(h3)}; }
+    V2 vh2x2() const { return {_mm_load_pd(h2x2)}; }
+    V2 vh3x6() const { return {_mm_load_pd(h3x6)}; }
 };
 inline constexpr int kStepTable = 64;
 struct StepTable {
     StepPowers p[kStepTable + 1];
     constexpr StepTable() : p{} {
-        for (int n = 1; n <= kStepTable; ++n) {
-            const double h = 1.0 / n;
-            p[n] = {h, h * h, h * h * h};
-        }
+        for (int n = 1; n <= kStepTable; ++n) p[n].set(n);
     }
 };
 inline constexpr StepTable kStepPowers{};
-inline StepPowers step_powers(int n) {
+// The powers for n ≥ 1: the table's entry, or `spare` filled in.
+inline const StepPowers& step_powers(int n, StepPowers& spare) {
     if (n <= kStepTable) return kStepPowers.p[n];
-    const double h = 1.0 / n;
-    return {h, h * h, h * h * h};
+    spare.set(n);
+    return spare;
+}
+// A curve's n points go to the sink through emit(sink, n, body): when sink.reserve(n) says the
+// sink has room for all n, through sink.line_reserved, which skips the per-point room test (and
+// so the direct route's flush call inside the point loop, around which the compiler spilled
+// the loop's values at every curve); otherwise through sink.line. `body(push)` calls push(p)
+// for each point in order.
+template <typename Sink, typename Body>
+inline void emit(Sink& sink, int n, Body&& body) {
+    if (sink.reserve(n))
+        body([&sink](V2 p) { sink.line_reserved(p); });
+    else
+        body([&sink](V2 p) { sink.line(p); });
 }
 
 // Quadratic p0 p1 p2 in n uniform steps; sink.line(Bᵢ) for points 1..n (p0 is already out).
@@ -131,21 +160,24 @@ inline StepPowers step_powers(int n) {
 // Each interior point Bᵢ is emitted as Bᵢ − dd/12 (dd is the same for every point).
 template <typename Sink>
 inline void balanced_quad(V2 p0, V2 p1, V2 p2, int n, Sink& sink) {
-    if (n > 1) {
-        const StepPowers s = step_powers(n);
-        const V2 a = p0 - 2.0 * p1 + p2;
-        const V2 b = 2.0 * (p1 - p0);
-        V2 d1 = b * s.h + a * s.h2;
-        const V2 dd = a * (2.0 * s.h2);
-        const V2 shift = dd * (-1.0 / 12.0);
-        V2 p = p0;
-        for (int i = 1; i < n; ++i) {
-            p = p + d1;
-            d1 = d1 + dd;
-            sink.line(p + shift);
+    emit(sink, n, [&](auto&& push) {
+        if (n > 1) {
+            StepPowers spare;
+            const StepPowers& s = step_powers(n, spare);
+            const V2 a = p0 - 2.0 * p1 + p2;
+            const V2 b = 2.0 * (p1 - p0);
+            V2 d1 = b * s.vh() + a * s.vh2();
+            const V2 dd = a * s.vh2x2();
+            const V2 shift = dd * (-1.0 / 12.0);
+            V2 p = p0;
+            for (int i = 1; i < n; ++i) {
+                p = p + d1;
+                d1 = d1 + dd;
+                push(p + shift);
+            }
         }
-    }
-    sink.line(p2);
+        push(p2);
+    });
 }
 
 // Cubic in n uniform steps. B(t) = p0 + c1 t + c2 t² + c3 t³ with c1 = 3(p1−p0),
@@ -155,29 +187,33 @@ inline void balanced_quad(V2 p0, V2 p1, V2 p2, int n, Sink& sink) {
 // which is d2 before it is advanced past point i.
 template <typename Sink>
 inline void balanced_cubic(V2 p0, V2 p1, V2 p2, V2 p3, int n, Sink& sink) {
-    if (n > 1) {
-        const StepPowers s = step_powers(n);
-        const V2 c1 = 3.0 * (p1 - p0);
-        const V2 c2 = 3.0 * (p0 - 2.0 * p1 + p2);
-        const V2 c3 = (p3 - p0) + 3.0 * (p1 - p2);
-        V2 d1 = c1 * s.h + c2 * s.h2 + c3 * s.h3;
-        V2 d2 = c2 * (2.0 * s.h2) + c3 * (6.0 * s.h3);
-        const V2 d3 = c3 * (6.0 * s.h3);
-        V2 p = p0;
-        for (int i = 1; i < n; ++i) {
-            p = p + d1;    // Bᵢ
-            d1 = d1 + d2;  // Bᵢ₊₁ − Bᵢ; d2 is still Bᵢ₊₁ − 2Bᵢ + Bᵢ₋₁
-            sink.line(p + d2 * (-1.0 / 12.0));
-            d2 = d2 + d3;
+    emit(sink, n, [&](auto&& push) {
+        if (n > 1) {
+            StepPowers spare;
+            const StepPowers& s = step_powers(n, spare);
+            const V2 c1 = 3.0 * (p1 - p0);
+            const V2 c2 = 3.0 * (p0 - 2.0 * p1 + p2);
+            const V2 c3 = (p3 - p0) + 3.0 * (p1 - p2);
+            V2 d1 = c1 * s.vh() + c2 * s.vh2() + c3 * s.vh3();
+            V2 d2 = c2 * s.vh2x2() + c3 * s.vh3x6();
+            const V2 d3 = c3 * s.vh3x6();
+            V2 p = p0;
+            for (int i = 1; i < n; ++i) {
+                p = p + d1;    // Bᵢ
+                d1 = d1 + d2;  // Bᵢ₊₁ − Bᵢ; d2 is still Bᵢ₊₁ − 2Bᵢ + Bᵢ₋₁
+                push(p + d2 * (-1.0 / 12.0));
+                d2 = d2 + d3;
+            }
         }
-    }
-    sink.line(p3);
+        push(p3);
+    });
 }
 
 // Walks `verbs` over control points given by `point(i, p)` (a V2; false: refuse the point),
 // calling
 //   sink.move(p)   at each contour start,
-//   sink.line(p)   for each flattened vertex after it,
+//   sink.line(p)   for each flattened vertex after it (or, for a curve's n points after
+//                  sink.reserve(n) returned true, sink.line_reserved(p)),
 //   sink.close()   at each contour end (Close verb, the next Move, or the end of the path),
 // with p a V2. Returns false, midway, when `point` refuses a point or a curve needs more than
 // kMaxSegmentsPerCurve steps.
