@@ -135,6 +135,15 @@ inline void dense_stem(const Band& band, __m128 f) {
     }
 }
 
+// Calls at(l) for each set bit l of mask, lowest first: as many steps as the lanes listed
+// (one or two of eight in a step, typically), where a test of every lane's bit took sixteen
+// instructions and as many branches per list per step.
+template <typename At>
+inline void for_each_lane(int mask, At&& at) {
+    for (unsigned m = static_cast<unsigned>(mask); m != 0; m &= m - 1)
+        at(__builtin_ctz(m));
+}
+
 // Draws the float segments b.fseg[0, n) into a dense band (no block flags), L::kLanes at a time.
 // A segment inside one row and two columns is one narrow piece. One that crosses one row
 // border and moves at most 1 in x is listed and, after the others, cut there into two
@@ -172,13 +181,10 @@ void draw_dense_batch(const Band& band, SegmentBatch& b, int n) {
                 L::cmp_le(L::sub(hi, lo), one));
             const int cuts = L::movemask(cut) & slow;
             const int stems = L::movemask(L::cmp_le(hi, X)) & slow & ~cuts;
-            for (int l = 0; l < kLanes; ++l)
-                if (cuts & (1 << l)) cut_idx[ncut++] = k + l;
-            if (stems != 0)
-                for (int l = 0; l < kLanes; ++l)
-                    if (stems & (1 << l)) stem_idx[nstem++] = k + l;
-            for (int l = 0; l < kLanes; ++l)
-                if ((slow & ~cuts & ~stems) & (1 << l)) b.slow[nslow++] = widen(f[k + l]);
+            for_each_lane(cuts, [&](int l) { cut_idx[ncut++] = k + l; });
+            for_each_lane(stems, [&](int l) { stem_idx[nstem++] = k + l; });
+            for_each_lane(slow & ~cuts & ~stems,
+                          [&](int l) { b.slow[nslow++] = widen(f[k + l]); });
             if (mask == 0) continue;
         }
         DensePieces<L> v;
