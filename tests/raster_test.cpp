@@ -17,6 +17,7 @@
 #include "bezel/raster.hpp"
 #include "raster/accumulate.hpp"
 #include "raster/dense_batch.hpp"
+#include "raster/direct_fill.hpp"
 #include "raster/draw_batch.hpp"
 #include "raster/fill_common.hpp"
 #include "raster/reference.hpp"
@@ -1065,6 +1066,61 @@ TEST(RasterKernels, EdgesStartingJustAboveRowZeroKeepEveryRowBalanced) {
             }
         }
     }
+}
+
+TEST(RasterKernels, Avx2TranslatedBoxIsTheMinMaxOfTheMovedPointsAndFlagsNaN) {
+    // The direct route boxes a translated path's points with the AVX2 loop when the CPU has it
+    // (direct_fill.hpp). Against a scalar loop over p + ef: lo and hi equal bit for bit when no
+    // sum is NaN, and the NaN lanes flagged exactly, for every count 0-40 (the four-, two- and
+    // one-point tails) and for points with infinities, NaN and huge values.
+    using namespace raster_detail;
+    const TranslatedBoxFn box = avx2_translated_box();
+    if (box == nullptr) GTEST_SKIP() << "no AVX2 on this CPU";
+    std::mt19937 rng(31337);
+    std::uniform_real_distribution<double> u(-1e4, 1e4), pick(0.0, 1.0);
+    const double inf = std::numeric_limits<double>::infinity();
+    const double nanv = std::numeric_limits<double>::quiet_NaN();
+    int with_nan = 0, finite = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const std::size_t n = static_cast<std::size_t>(trial % 41);
+        std::vector<Point> pts(n);
+        const bool hostile = trial % 5 == 0;
+        for (Point& p : pts) {
+            p = {u(rng), u(rng)};
+            if (hostile && pick(rng) < 0.1) p.x = pick(rng) < 0.5 ? nanv : -inf;
+            if (hostile && pick(rng) < 0.1) p.y = pick(rng) < 0.5 ? nanv : 1e308;
+        }
+        const double e = u(rng), f = u(rng);
+        double lx = inf, ly = inf, hx = -inf, hy = -inf;
+        bool nx = false, ny = false;
+        for (const Point& p : pts) {
+            const double x = p.x + e, y = p.y + f;
+            nx = nx || std::isnan(x);
+            ny = ny || std::isnan(y);
+            lx = std::min(lx, x);
+            ly = std::min(ly, y);
+            hx = std::max(hx, x);
+            hy = std::max(hy, y);
+        }
+        __m128d lo, hi, nan;
+        box(pts.data(), n, _mm_set_pd(f, e), lo, hi, nan);
+        double l[2], h[2], q[2];
+        _mm_storeu_pd(l, lo);
+        _mm_storeu_pd(h, hi);
+        _mm_storeu_pd(q, nan);
+        ASSERT_EQ(_mm_movemask_pd(nan), (nx ? 1 : 0) | (ny ? 2 : 0)) << "trial " << trial;
+        if (nx || ny) {
+            ++with_nan;
+            continue;
+        }
+        ++finite;
+        EXPECT_EQ(l[0], lx) << "trial " << trial << ", " << n << " points";
+        EXPECT_EQ(l[1], ly) << "trial " << trial;
+        EXPECT_EQ(h[0], hx) << "trial " << trial;
+        EXPECT_EQ(h[1], hy) << "trial " << trial;
+    }
+    EXPECT_GT(with_nan, 50);
+    EXPECT_GT(finite, 1000);
 }
 
 TEST(RasterKernels, WangStepCountIsTheCeilingOfWangsFormula) {

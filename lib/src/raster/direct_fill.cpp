@@ -219,7 +219,10 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     // tp only grows (a resize per fill was a call, and zeroed what the transform overwrites).
     const bool fits = tp.size() >= src.size();
     __m128d lo, hi, nan;
-    if (translate)
+    static const TranslatedBoxFn box = avx2_translated_box();
+    if (translate && box != nullptr)
+        box(src.data(), src.size(), _mm_set_pd(m.f, m.e), lo, hi, nan);
+    else if (translate)
         transform_points<false, true>(src, m, nullptr, lo, hi, nan);
     else if (fits)
         transform_points<true>(src, m, tp.data(), lo, hi, nan);
