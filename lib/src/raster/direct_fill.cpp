@@ -83,17 +83,6 @@ struct DrawSink {
         else
             first = cur = clamp(p);
     }
-    void line(V2 p) {
-        const __m128d q = clamp(p);
-        if constexpr (!kMark) {
-            const __m128 qf = _mm_cvtpd_ps(q);
-            push_f(cur_f, qf);
-            cur_f = qf;
-        } else {
-            push(cur, q);
-            cur = q;
-        }
-    }
     // Room for a curve's n points (render_flatten.hpp, emit): flushes first when the queue
     // lacks it; false when n is more than a queue holds. The queue is never left full (push
     // flushes at kSize and tests for nothing else), so a reservation keeps queued < kSize.
@@ -112,6 +101,10 @@ struct DrawSink {
             batch.seg[queued++] = {cur, q};
             cur = q;
         }
+    }
+    void line(V2 p) {
+        line_reserved(p);
+        if (queued == SegmentBatch::kSize) flush();
     }
     void close() {
         if constexpr (!kMark) {
