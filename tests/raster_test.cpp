@@ -1104,10 +1104,9 @@ TEST(RasterKernels, Avx2TranslatedBoxIsTheMinMaxOfTheMovedPointsAndFlagsNaN) {
         }
         __m128d lo, hi, nan;
         box(pts.data(), n, _mm_set_pd(f, e), lo, hi, nan);
-        double l[2], h[2], q[2];
+        double l[2], h[2];
         _mm_storeu_pd(l, lo);
         _mm_storeu_pd(h, hi);
-        _mm_storeu_pd(q, nan);
         ASSERT_EQ(_mm_movemask_pd(nan), (nx ? 1 : 0) | (ny ? 2 : 0)) << "trial " << trial;
         if (nx || ny) {
             ++with_nan;
