@@ -11,8 +11,9 @@
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 
-#pragma GCC push_options
-#pragma GCC target("avx2")
+#include "raster/target_avx2.hpp"
+
+BEZEL_AVX2_BEGIN
 
 namespace bezel::raster_detail {
 
@@ -62,7 +63,7 @@ void translated_box(const Point* p, std::size_t n, __m128d ef, __m128d& lo, __m1
 
 }  // namespace
 }  // namespace bezel::raster_detail
-#pragma GCC pop_options
+BEZEL_AVX2_END
 
 namespace bezel::raster_detail {
 

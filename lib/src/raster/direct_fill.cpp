@@ -130,10 +130,12 @@ void draw_path(const Path& path, const Point* points, V2 offset, V2 shift, doubl
         band, batch, four == nullptr ? nullptr : kMark ? four->marked[kSplit] : four->dense);
     walk_balanced(path.verbs(), tol,
                   [points, offset, shift](std::size_t i, V2& p) {
-                      if constexpr (kTranslate)
+                      if constexpr (kTranslate) {
                           p = (V2::of(points[i]) + offset) - shift;
-                      else
+                      } else {
+                          (void)offset;  // captured for the translated walk only
                           p = V2::of(points[i]) - shift;
+                      }
                       return true;
                   },
                   sink);

@@ -15,8 +15,9 @@
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 
-#pragma GCC push_options
-#pragma GCC target("avx2")
+#include "raster/target_avx2.hpp"
+
+BEZEL_AVX2_BEGIN
 
 namespace bezel::raster_detail {
 
@@ -156,7 +157,7 @@ void stem_rows(const Band& band, int r0, int r1, int ic, double x0, double y0, d
 
 }  // namespace
 }  // namespace bezel::raster_detail
-#pragma GCC pop_options
+BEZEL_AVX2_END
 
 namespace bezel::raster_detail {
 

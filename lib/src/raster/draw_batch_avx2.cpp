@@ -22,8 +22,9 @@
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 
-#pragma GCC push_options
-#pragma GCC target("avx2")
+#include "raster/target_avx2.hpp"
+
+BEZEL_AVX2_BEGIN
 
 // Compiled here for AVX2 (internal linkage; see its header comment).
 #include "raster/dense_batch.hpp"
@@ -238,7 +239,7 @@ void draw_batch_four(const Band& band, SegmentBatch& b, int n) {
 
 }  // namespace
 }  // namespace bezel::raster_detail
-#pragma GCC pop_options
+BEZEL_AVX2_END
 
 namespace bezel::raster_detail {
 

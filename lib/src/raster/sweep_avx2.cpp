@@ -13,8 +13,9 @@
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 
-#pragma GCC push_options
-#pragma GCC target("avx2")
+#include "raster/target_avx2.hpp"
+
+BEZEL_AVX2_BEGIN
 #include "raster/sweep_blocks.hpp"
 
 
@@ -194,7 +195,7 @@ void avx2_dense(float* acc, std::ptrdiff_t group_stride, int n, int rows, Out* o
 
 }  // namespace
 }  // namespace bezel::raster_detail
-#pragma GCC pop_options
+BEZEL_AVX2_END
 
 namespace bezel::raster_detail {
 

@@ -22,7 +22,8 @@
 
 namespace bezel::raster_detail {
 // Internal linkage: each kernel file compiles these for its own instruction set (the AVX2 file
-// inside `#pragma GCC target("avx2")`), and the copies must not be merged by the linker.
+// inside its BEZEL_AVX2_BEGIN region, target_avx2.hpp), and the copies must not be merged by
+// the linker.
 namespace {
 
 // Writes the first `count` (0..15) bytes of `src` with fixed-size moves instead of a memcpy
