@@ -84,9 +84,9 @@ inline void draw_or_split(SegmentBatch& b, const SegmentBatch::Segment& s, int& 
 // spilled its constants around it; deferred, a glyph at 12 px runs 6 % fewer instructions and
 // measured 2-15 % faster at 12-512 px (bench_raster, 8 alternating rounds each way, 2026-12-02).
 // Deferring only reorders float additions into the band.
-// Internal linkage: draw_batch_avx2.cpp calls it too, and should its copy ever be compiled for
-// AVX2 (the file compiled with -mavx2, or this header included inside its BEZEL_AVX2_BEGIN
-// region), the linker must not pick that copy for the baseline callers.
+// Internal linkage: draw_batch_avx2.cpp calls it too; it includes this header before its AVX2
+// region, but should a copy ever be compiled for AVX2, the linker must not pick it for the
+// baseline callers (target_avx2.hpp).
 namespace {
 template <bool kMark>
 [[gnu::noinline, gnu::flatten]] void draw_lines(const Band& band, const SegmentBatch::Segment* s,
