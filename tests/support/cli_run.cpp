@@ -1,6 +1,7 @@
 #include "cli_run.hpp"
 
 #include <fcntl.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -12,37 +13,61 @@
 
 namespace fs = std::filesystem;
 
+extern char** environ;  // POSIX: the process environment, for posix_spawnp
+
 namespace bezel::test {
 
 namespace {
 // Capture file names, hidden so entries() can leave them out.
 constexpr const char* kOut = ".bezel-test-stdout";
 constexpr const char* kErr = ".bezel-test-stderr";
+
+// The words a cross build runs its target programs through (CMAKE_CROSSCOMPILING_EMULATOR,
+// say "qemu-aarch64 -L /usr/aarch64-linux-gnu", separated by spaces), or none.
+std::vector<std::string> emulator_words() {
+    std::vector<std::string> words;
+#ifdef BEZEL_TEST_EMULATOR
+    std::istringstream in(BEZEL_TEST_EMULATOR);
+    for (std::string w; in >> w;) words.push_back(w);
+#endif
+    return words;
+}
 }  // namespace
 
+// posix_spawn rather than fork + exec: the test process may have threads, and under qemu-user a
+// forked child of a dynamically linked program never reaches exec (qemu 7.2 spins in it), where
+// posix_spawn's clone runs.
 CliRun run_program(const std::string& exe, const std::vector<std::string>& args,
                    const fs::path& cwd) {
-    const fs::path out_file = cwd / kOut, err_file = cwd / kErr;
+    const fs::path out_file = fs::absolute(cwd / kOut), err_file = fs::absolute(cwd / kErr);
     CliRun r;
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        const int in = ::open("/dev/null", O_RDONLY);
-        const int out = ::open(out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-        const int err = ::open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-        if (in < 0 || out < 0 || err < 0 || ::chdir(cwd.c_str()) != 0) ::_exit(127);
-        ::dup2(in, 0);
-        ::dup2(out, 1);
-        ::dup2(err, 2);
-        std::vector<std::string> copy = args;
-        std::string program = exe;
-        std::vector<char*> argv{program.data()};
-        for (std::string& a : copy) argv.push_back(a.data());
-        argv.push_back(nullptr);
-        ::execv(program.c_str(), argv.data());
-        ::_exit(127);
+    std::vector<std::string> words = emulator_words();
+    words.push_back(exe);
+    words.insert(words.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& w : words) argv.push_back(w.data());
+    argv.push_back(nullptr);
+
+    posix_spawn_file_actions_t actions;
+    if (::posix_spawn_file_actions_init(&actions) != 0) return r;
+    const int mode = O_WRONLY | O_CREAT | O_TRUNC;
+    const bool ready =
+        ::posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0) == 0 &&
+        ::posix_spawn_file_actions_addopen(&actions, 1, out_file.c_str(), mode, 0600) == 0 &&
+        ::posix_spawn_file_actions_addopen(&actions, 2, err_file.c_str(), mode, 0600) == 0 &&
+        ::posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str()) == 0;
+    pid_t pid = -1;
+    const int spawned =
+        ready ? ::posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ) : -1;
+    ::posix_spawn_file_actions_destroy(&actions);
+    if (spawned != 0) {
+        r.exit_code = 127;  // what a shell reports for a program it cannot start
+        r.err = "cannot start " + words.front() + ": " +
+                (spawned > 0 ? std::system_category().message(spawned) : "file actions failed");
+        return r;
     }
     int status = 0;
-    if (pid < 0 || ::waitpid(pid, &status, 0) != pid) return r;
+    if (::waitpid(pid, &status, 0) != pid) return r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     r.out = slurp(out_file);
     r.err = slurp(err_file);

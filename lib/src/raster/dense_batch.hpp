@@ -31,7 +31,7 @@
 // include this header after its pragma and nowhere before it.
 #pragma once
 
-#include <emmintrin.h>
+#include "raster/sse2.hpp"
 
 #include <algorithm>
 #include <cstdint>

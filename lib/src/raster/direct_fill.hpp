@@ -21,7 +21,7 @@
 // 7-9 % faster than 10 at 384-512 px.
 #pragma once
 
-#include <emmintrin.h>
+#include "raster/sse2.hpp"
 
 #include <cstddef>
 #include <cstdint>

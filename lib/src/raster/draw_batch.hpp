@@ -21,8 +21,7 @@
 // tested against (within float rounding).
 #pragma once
 
-#include <emmintrin.h>
-#include <xmmintrin.h>
+#include "raster/sse2.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -15,7 +15,7 @@
 // midpoints |Δ²|/8 − |Δ²|/12 = |Δ²|/24, against |Δ²|/8 for the plain polyline.
 #pragma once
 
-#include <emmintrin.h>
+#include "raster/sse2.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Scalar and SSE2 sweep kernels, and the run-time choice between them and AVX2.
 #include "raster/sweep.hpp"
 
-#include <emmintrin.h>
+#include "raster/sse2.hpp"
 
 #include <algorithm>
 #include <utility>
