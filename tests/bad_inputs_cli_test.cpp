@@ -65,6 +65,7 @@ void make_bad_files(const fs::path& dir) {
     write_file(dir / "garbled-glyf.ttf", garbled);
     write_file(dir / "empty.ttf", "");
     write_file(dir / "text.ttf", "this is not a font\n");
+    write_file(dir / "latin1.txt", "a\xE9z\n");  // é in Latin-1: not UTF-8
     fs::create_directory(dir / "a-directory.ttf");
 }
 
@@ -81,10 +82,11 @@ std::vector<BadInput> catalogue() {
         {"missing font file", {"outline", "missing.ttf", "--char", "g", "-o", "out.svg"}, 1, "missing.ttf"},
         {"missing font file (render)", {"render", "missing.ttf", "--text", "g", "-o", "out.png"}, 1, "missing.ttf"},
         {"face index out of range", {"outline", kDejaVu, "--face-index", "3", "--char", "g", "-o", "out.svg"}, 1, "face"},
-        {"font size 0", {"outline", kDejaVu, "--char", "g", "--font-size", "0", "-o", "out.svg"}, 1, "--font-size"},
-        {"negative font size", {"outline", kDejaVu, "--char", "g", "--font-size", "-12", "-o", "out.svg"}, 1, "--font-size"},
-        {"NaN font size", {"outline", kDejaVu, "--char", "g", "--font-size", "nan", "-o", "out.svg"}, 1, "--font-size"},
-        {"enormous font size", {"outline", kDejaVu, "--char", "g", "--font-size", "1e9", "-o", "out.svg"}, 1, "--font-size"},
+        {"font size 0", {"outline", kDejaVu, "--char", "g", "--font-size", "0", "-o", "out.svg"}, 2, "--font-size 0"},
+        {"negative font size", {"outline", kDejaVu, "--char", "g", "--font-size", "-12", "-o", "out.svg"}, 2, "--font-size -12"},
+        {"NaN font size", {"outline", kDejaVu, "--char", "g", "--font-size", "nan", "-o", "out.svg"}, 2, "--font-size nan"},
+        {"enormous font size", {"outline", kDejaVu, "--char", "g", "--font-size", "1e9", "-o", "out.svg"}, 2, "--font-size 1e+09"},
+        {"font size 0 (glyph)", {"glyph", kDejaVu, "--char", "g", "--font-size", "0", "-o", "out.png"}, 2, "--font-size 0"},
         {"enormous font size (render)", {"render", kDejaVu, "--text", "g", "--font-size", "1e300", "-o", "out.png"}, 2, "--font-size"},
         {"font size not a number", {"render", kDejaVu, "--text", "g", "--font-size", "big", "-o", "out.png"}, 2, "--font-size"},
         {"unknown variation axis", {"outline", kDejaVu, "--char", "g", "--variations", "wght=700", "-o", "out.svg"}, 1, "wght"},
@@ -102,10 +104,14 @@ std::vector<BadInput> catalogue() {
         {"output where files cannot be created", {"render", kDejaVu, "--text", "g", "-o", "/proc/out.png"}, 1, "/proc/out.png"},
         {"output under a regular file", {"smooth", "--method", "natural", "--points", "0,0 1,1", "-o", "text.ttf/out.svg"}, 1, "text.ttf/out.svg"},
         {"output onto a directory", {"outline", kDejaVu, "--char", "g", "-O", "svg", "-o", "a-directory.ttf"}, 1, "a-directory.ttf"},
-        {"invalid UTF-8 text (lone continuation byte)", {"render", kDejaVu, "--text", "a\x80z", "-o", "out.png"}, 1, "byte 1"},
-        {"invalid UTF-8 text (surrogate)", {"render", kDejaVu, "--text", "\xED\xA0\x80", "-o", "out.png"}, 1, "byte 0"},
-        {"invalid UTF-8 --char", {"outline", kDejaVu, "--char", "\xC3", "-o", "out.svg"}, 2, "--char"},
-        {"--text past kMaxTextCodePoints", {"outline", kDejaVu, "--text", std::string(1001, 'a')}, 1, "--text"},
+        {"invalid UTF-8 text (lone continuation byte)", {"render", kDejaVu, "--text", "a\x80z", "-o", "out.png"}, 2, "--text: text byte 1"},
+        {"invalid UTF-8 text (surrogate)", {"render", kDejaVu, "--text", "\xED\xA0\x80", "-o", "out.png"}, 2, "--text: text byte 0"},
+        {"invalid UTF-8 TEXT argument", {"render", kDejaVu, "a\x80z", "-o", "out.png"}, 2, "TEXT: text byte 1"},
+        {"invalid UTF-8 in a --text-file", {"render", kDejaVu, "--text-file", "latin1.txt", "-o", "out.png"}, 1, "latin1.txt: text byte 1"},
+        {"invalid UTF-8 --char", {"outline", kDejaVu, "--char", "\xC3", "-o", "out.svg"}, 2, "--char: '\xC3': text byte 0"},
+        {"invalid UTF-8 --text (glyph)", {"glyph", kDejaVu, "--text", "a\x80z", "-o", "out.png"}, 2, "--text: text byte 1"},
+        {"--text past kMaxTextCodePoints", {"outline", kDejaVu, "--text", std::string(1001, 'a')}, 2, "--text: 1001 characters"},
+        {"tolerance out of range", {"glyph", kDejaVu, "--char", "g", "--tolerance", "0", "-o", "out.png"}, 2, "--tolerance 0: expected"},
         {"missing --text-file", {"render", kDejaVu, "--text-file", "missing.txt", "-o", "out.png"}, 1, "missing.txt"},
     };
 }

@@ -104,7 +104,13 @@ TEST_F(Cli, UsageErrorsExitTwo) {
     expect_usage_error(run({"outline", "--char", "g", "--gid", "3"}), "2 were given");
     expect_usage_error(run({"outline", "--char", "g", "--text", "ab"}), "2 were given");
     expect_usage_error(run({"outline", "--char", "g", "-O", "png"}), "png");
-    expect_usage_error(run({"outline", "--char", "ab"}), "--char 'ab'");
+    expect_usage_error(run({"outline", "--char", "ab"}), "--char: 'ab': expected one character");
+    // A value out of range is the command line's fault too, whatever the subcommand.
+    expect_usage_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "0"}), "--font-size 0");
+    expect_usage_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "-5"}), "--font-size -5");
+    expect_usage_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "1e9"}), "--font-size");
+    expect_usage_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "nan"}), "--font-size nan");
+    expect_usage_error(run({"outline", kDejaVu, "--text", ""}), "--text: empty string");
     expect_usage_error(run({"outline", "--char", "U+D800"}), "U+D800");
     expect_usage_error(run({"outline", "--char", "g", "--font-size", "big"}), "big");
     expect_usage_error(run({"outline", "--char", "g", "--variations", "wght"}), "wght");
@@ -127,10 +133,6 @@ TEST_F(Cli, RuntimeErrorsExitOneWithOneLineNamingInput) {
     expect_runtime_error(run({"outline", not_a_font.string(), "--char", "g"}), "notes.ttf");
     expect_runtime_error(run({"outline", kDejaVu, "--gid", "6253"}), "--gid 6253");
     expect_runtime_error(run({"outline", kDejaVu, "--gid", "4000000000"}), "--gid");
-    expect_runtime_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "0"}), "--font-size");
-    expect_runtime_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "-5"}), "--font-size");
-    expect_runtime_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "1e9"}), "--font-size");
-    expect_runtime_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "nan"}), "--font-size");
     expect_runtime_error(run({"outline", kDejaVu, "--char", "g", "--face-index", "3"}), "DejaVuSans.ttf");
     // A private-use code point DejaVu Sans does not map.
     expect_runtime_error(run({"outline", kDejaVu, "--char", "U+10FFFD"}), "U+10FFFD");
@@ -435,8 +437,9 @@ TEST_F(Cli, TextWithUnmappedCharacterWarnsAndUsesNotdef) {
     EXPECT_EQ(j["glyphs"][1]["gid"].get<int>(), 0);
 }
 
-TEST_F(Cli, InvalidUtf8TextIsRuntimeErrorNamingOption) {
-    expect_runtime_error(run({"outline", kDejaVu, "--text", "a\xff"}), "--text");
+// Malformed text given on the command line is the command line's fault, as a malformed --char is.
+TEST_F(Cli, InvalidUtf8TextIsUsageErrorNamingOptionAndByte) {
+    expect_usage_error(run({"outline", kDejaVu, "--text", "a\xff"}), "--text: text byte 1");
 }
 
 }  // namespace

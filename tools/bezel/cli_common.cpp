@@ -34,7 +34,7 @@ Expected<std::u32string> decode_utf8(std::string_view text) { return bezel::deco
 void append_utf8(std::string& out, char32_t cp) { bezel::append_utf8(out, cp); }
 
 Expected<char32_t> parse_code_point(std::string_view arg) {
-    const std::string quoted = "--char '" + std::string(arg) + "'";
+    const std::string quoted = "'" + std::string(arg) + "'";
     if (arg.size() > 2 && (arg[0] == 'U' || arg[0] == 'u') && arg[1] == '+') {
         std::string_view hex = arg.substr(2);
         if (hex.size() > 6)

@@ -47,7 +47,8 @@ Expected<std::u32string> decode_utf8(std::string_view text);
 void append_utf8(std::string& out, char32_t code_point);
 
 // Parses a --char argument: one UTF-8 encoded code point ("g", "é"), or "U+0067" / "u+67"
-// (1 to 6 hex digits). The error names the argument.
+// (1 to 6 hex digits). The error quotes the argument and leaves naming the option to the caller
+// (CLI11 prefixes a check's message with "--char: ").
 Expected<char32_t> parse_code_point(std::string_view arg);
 // "U+0067" (at least four hex digits, upper case).
 std::string format_code_point(char32_t code_point);

@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "font_args.hpp"
 #include "glyph_bitmap.hpp"
+#include "glyph_choice.hpp"
 
 namespace bezel::cli {
 namespace {
@@ -17,12 +18,10 @@ enum class GlyphFormat { Ascii, Json, Png, Pnm };
 
 struct GlyphArgs {
     FontArgs font;
-    std::string chr, text, format, output_file;
-    GlyphId gid = 0;
+    GlyphChoice which;
+    std::string format, output_file;
     std::string fill = "nonzero", lcd, offset, flatten = "wang", overlap = "auto";
     double tolerance_px = kDefaultRasterTolerancePx;
-    CLI::Option* gid_option = nullptr;
-    CLI::Option* text_option = nullptr;
 };
 
 const std::string kGlyphCommand = "bezel glyph";
@@ -65,41 +64,6 @@ FlattenMethod method_named(const std::string& name) {
     return FlattenMethod::WangUniform;
 }
 
-Expected<std::vector<GlyphRequest>> requested(const GlyphArgs& args, const Font& font) {
-    std::vector<GlyphRequest> out;
-    if (args.gid_option->count() > 0) {
-        if (args.gid >= font.glyph_count())
-            return Error{"--gid " + std::to_string(args.gid) + ": out of range, " + font.file() +
-                         " has " + std::to_string(font.glyph_count()) + " glyphs"};
-        return std::vector<GlyphRequest>{{args.gid, std::nullopt}};
-    }
-    std::u32string cps;
-    if (args.text_option->count() > 0) {
-        auto decoded = decode_utf8(args.text);
-        if (!decoded) return Error{"--text: " + decoded.error().message};
-        if (decoded->empty()) return Error{"--text: empty string"};
-        if (decoded->size() > kMaxTextCodePoints)
-            return Error{"--text: " + std::to_string(decoded->size()) +
-                         " characters, more than the " + std::to_string(kMaxTextCodePoints) +
-                         " allowed"};
-        cps = *decoded;
-    } else {
-        auto cp = parse_code_point(args.chr);
-        if (!cp) return cp.error();
-        if (!font.glyph_for_char(*cp))
-            return Error{font.file() + ": no glyph for " + format_code_point(*cp)};
-        cps = std::u32string(1, *cp);
-    }
-    for (char32_t cp : cps) {
-        auto gid = font.glyph_for_char(cp);
-        if (!gid)
-            std::cerr << "bezel: warning: " << font.file() << ": no glyph for "
-                      << format_code_point(cp) << ", using .notdef\n";
-        out.push_back({gid.value_or(0), cp});
-    }
-    return out;
-}
-
 int run_glyph(const GlyphArgs& args) {
     auto format = pick_format(args);
     if (!format) return fail_usage(format.error().message, kGlyphCommand);
@@ -108,7 +72,7 @@ int run_glyph(const GlyphArgs& args) {
     if (Status t = check_tolerance(args.tolerance_px); !t)
         return fail_usage(t.error().message, kGlyphCommand);
     if (auto size_ok = check_font_size(args.font); !size_ok)
-        return fail_runtime(size_ok.error().message);
+        return fail_usage(size_ok.error().message, kGlyphCommand);
 
     GlyphRenderSettings settings;
     settings.size_px = args.font.size_px;
@@ -124,7 +88,7 @@ int run_glyph(const GlyphArgs& args) {
 
     auto font = open_font(args.font);
     if (!font) return fail_runtime(font.error().message);
-    auto requests = requested(args, *font);
+    auto requests = requested_glyphs(args.which, *font);
     if (!requests) return fail_runtime(requests.error().message);
 
     // Every box first, so that the pixel budget is checked before any pixel is allocated.
@@ -186,14 +150,7 @@ Command add_glyph_command(CLI::App& app) {
         "  bezel glyph font.ttf --text 'Hamburg' --font-size 32 -o hamburg.png\n"
         "  bezel glyph --gid 36 --font-size 12 --lcd rgb --offset 0.25,0 -O json");
     add_font_args(*cmd, args->font);
-    CLI::Option_group* which = cmd->add_option_group("glyph", "Which glyph(s), exactly one of:");
-    which->add_option("--char", args->chr, "A character: itself in UTF-8, or U+XXXX")
-        ->type_name("C");
-    args->gid_option = which->add_option("--gid", args->gid, "A glyph id")->type_name("N");
-    args->text_option =
-        which->add_option("--text", args->text, "Each character of a string (cmap, no shaping)")
-            ->type_name("STR");
-    which->require_option(1);
+    add_glyph_choice(*cmd, args->which, "Each character of a string (cmap, no shaping)");
     cmd->add_option("-O,--output-format", args->format,
                     "ascii, json, png or pgm; default: from the -o file's extension, else ascii")
         ->type_name("FORMAT")

@@ -13,6 +13,7 @@
 #include "bezel/font.hpp"
 #include "bezel/image.hpp"
 #include "bezel/raster.hpp"
+#include "glyph_choice.hpp"
 
 namespace CLI { class App; }
 
@@ -67,11 +68,6 @@ struct GlyphBitmap {
     GlyphMode mode = GlyphMode::Gray;
     std::vector<std::uint8_t> pixels;   // rows packed: width bytes, or 3·width for LCD (R, G, B)
     int bytes_per_pixel() const { return mode == GlyphMode::Gray ? 1 : 3; }
-};
-
-struct GlyphRequest {
-    GlyphId gid = 0;
-    std::optional<char32_t> code_point;
 };
 
 // Loads the outline and computes the box (no pixels yet). Errors name the glyph.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <sstream>
 
 #include "glyph_bitmap.hpp"
 
@@ -40,8 +41,9 @@ void add_picture_options(CLI::App& cmd, std::string& output_file, std::string& f
 
 Status check_tolerance(double tolerance_px) {
     if (tolerance_px >= kMinFlattenTolerancePx && tolerance_px <= 100.0) return ok_status();
-    return Error{"--tolerance " + std::to_string(tolerance_px) +
-                 ": expected a number of pixels in [1e-9, 100]"};
+    std::ostringstream msg;  // the value as given ("0", "1e-12"), not std::to_string's "0.000000"
+    msg << "--tolerance " << tolerance_px << ": expected a number of pixels in [1e-9, 100]";
+    return Error{msg.str()};
 }
 
 }  // namespace bezel::cli

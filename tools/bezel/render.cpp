@@ -197,6 +197,11 @@ int run_render(RenderArgs& args) {
         if (!read) return fail_runtime(read.error().message);
         text = std::move(*read);
     } else if (args.cmd->count("TEXT") + args.cmd->count("--text") > 0) {
+        // Text on the command line that is not UTF-8 is a usage error naming the argument (a
+        // --text-file's is a runtime one naming the file, read_text_file).
+        const std::string where = args.cmd->count("--text") > 0 ? "--text" : "TEXT";
+        if (auto valid = decode_utf8(args.text); !valid)
+            return fail_usage(where + ": " + valid.error().message, kRenderCommand);
         text = args.text;
     }
 
