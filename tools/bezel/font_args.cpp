@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "parse_check.hpp"
+
 namespace bezel::cli {
 
 void add_font_args(CLI::App& cmd, FontArgs& args) {
@@ -23,12 +25,7 @@ void add_font_args(CLI::App& cmd, FontArgs& args) {
     cmd.add_option("--variations", args.variations,
                    "Variable-font axis values, comma-separated, e.g. \"wght=700,wdth=80\"")
         ->type_name("LIST")
-        ->check(CLI::Validator(
-            [](std::string& value) {
-                auto parsed = parse_variations(value);
-                return parsed ? std::string() : parsed.error().message;
-            },
-            "", "variations"));  // empty description: help shows "LIST", not "LIST:LIST"
+        ->check(parse_check(parse_variations, "variations"));
     cmd.add_flag("--hinting", args.hinting,
                  "Hint the outlines (TrueType bytecode or FreeType's hinter) instead of exact "
                  "scaling");

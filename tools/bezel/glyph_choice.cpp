@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli_common.hpp"
+#include "parse_check.hpp"
 
 namespace bezel::cli {
 
@@ -22,17 +23,6 @@ Expected<std::u32string> decode_glyph_text(const std::string& text) {
     return decoded;
 }
 
-// A CLI11 check from a parser returning Expected: its error message, or "" when it parses.
-template <typename Parse>
-CLI::Validator check_with(Parse parse, const std::string& name) {
-    return CLI::Validator(
-        [parse](std::string& value) {
-            auto parsed = parse(value);
-            return parsed ? std::string() : parsed.error().message;
-        },
-        "", name);
-}
-
 }  // namespace
 
 void add_glyph_choice(CLI::App& cmd, GlyphChoice& choice, const std::string& text_help) {
@@ -40,11 +30,11 @@ void add_glyph_choice(CLI::App& cmd, GlyphChoice& choice, const std::string& tex
     CLI::Option_group* which = cmd.add_option_group("glyph", "Which glyph(s), exactly one of:");
     which->add_option("--char", choice.chr, "A character: itself in UTF-8, or U+XXXX")
         ->type_name("C")
-        ->check(check_with([](const std::string& v) { return parse_code_point(v); }, "char"));
+        ->check(parse_check([](const std::string& v) { return parse_code_point(v); }, "char"));
     choice.gid_option = which->add_option("--gid", choice.gid, "A glyph id")->type_name("N");
     choice.text_option = which->add_option("--text", choice.text, text_help)
                              ->type_name("STR")
-                             ->check(check_with(decode_glyph_text, "text"));
+                             ->check(parse_check(decode_glyph_text, "text"));
     which->require_option(1);
 }
 
