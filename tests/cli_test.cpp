@@ -106,14 +106,15 @@ TEST_F(Cli, UsageErrorsExitTwo) {
     expect_usage_error(run({"outline", "--char", "g", "-O", "png"}), "png");
     expect_usage_error(run({"outline", "--char", "ab"}), "--char: 'ab': expected one character");
     // A value out of range is the command line's fault too, whatever the subcommand.
-    expect_usage_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "0"}), "--font-size 0");
-    expect_usage_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "-5"}), "--font-size -5");
-    expect_usage_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "1e9"}), "--font-size");
-    expect_usage_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "nan"}), "--font-size nan");
+    expect_usage_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "0"}), "--font-size: '0': must be > 0");
+    expect_usage_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "-5"}), "--font-size: '-5'");
+    expect_usage_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "1e9"}), "--font-size: '1e9'");
+    expect_usage_error(run({"outline", kDejaVu, "--char", "g", "--font-size", "nan"}), "--font-size: 'nan'");
     expect_usage_error(run({"outline", kDejaVu, "--text", ""}), "--text: empty string");
     expect_usage_error(run({"outline", "--char", "U+D800"}), "U+D800");
-    expect_usage_error(run({"outline", "--char", "g", "--font-size", "big"}), "big");
-    expect_usage_error(run({"outline", "--char", "g", "--variations", "wght"}), "wght");
+    expect_usage_error(run({"outline", "--char", "g", "--font-size", "big"}), "--font-size: 'big': not a number");
+    expect_usage_error(run({"outline", "--char", "g", "--variations", "wght"}),
+                       "--variations: 'wght': expected TAG=VALUE");
     expect_usage_error(run({"outline", "--gid", "-1"}), "-1");
     expect_usage_error(run({}), "subcommand");
     expect_usage_error(run({"frobnicate"}), "frobnicate");

@@ -345,7 +345,7 @@ TEST_F(GlyphCli, ErrorsNameTheirInput) {
         {{kDejaVu, "--gid", "999999"}, 1, "--gid 999999"},
         {{kDejaVu, "--char", "U+10FFFF"}, 1, "U+10FFFF"},
         {{"no-such-font.ttf", "--char", "a"}, 1, "no-such-font.ttf"},
-        {{kDejaVu, "--char", "a", "--font-size", "0"}, 2, "--font-size 0"},
+        {{kDejaVu, "--char", "a", "--font-size", "0"}, 2, "--font-size: '0'"},
         {{kDejaVu, "--text", std::string(600, 'W'), "--font-size", "300"}, 1, "kMaxGlyphOutputPixels"},
         {{kDejaVu, "--char", " ", "-O", "png"}, 1, "empty"},
         {{kDejaVu, "--char", "a", "-o", "no/such/dir/a.png"}, 1, "no/such/dir/a.png"},

@@ -50,7 +50,6 @@ struct Entry {
 int run_atlas(AtlasArgs& args) {
     if (args.cmd->count("--hinting") > 0)
         return fail_usage("--hinting: atlas glyphs are rendered unhinted", kAtlasCommand);
-    if (auto ok = check_font_size(args.font); !ok) return fail_usage(ok.error().message, kAtlasCommand);
     if (args.output_file == "-" && (args.json_file.empty() || args.json_file == "-"))
         return fail_usage("-o - and the JSON cannot both go to stdout (give --json FILE)", kAtlasCommand);
     auto code_points = decode_utf8(args.chars);

@@ -10,6 +10,27 @@
 
 namespace bezel::cli {
 
+namespace {
+
+// A --font-size as typed: a finite number in (0, kMaxFontSizePx]. Checked on the text, before
+// CLI11 converts it, so that "big" gets this message rather than CLI11's "Could not convert".
+// The message leaves the option's name to CLI11 ("--font-size: '0': ...").
+Expected<double> parse_font_size(const std::string& text) {
+    char* end = nullptr;
+    const double px = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size())
+        return Error{"'" + text + "': not a number"};
+    // Written so that NaN fails too.
+    if (!(px > 0.0 && px <= kMaxFontSizePx)) {
+        std::ostringstream msg;
+        msg << "'" << text << "': must be > 0 and <= " << kMaxFontSizePx;
+        return Error{msg.str()};
+    }
+    return px;
+}
+
+}  // namespace
+
 void add_font_args(CLI::App& cmd, FontArgs& args) {
     args.file = BEZEL_DEFAULT_FONT;
     cmd.add_option("FONT", args.file,
@@ -21,7 +42,8 @@ void add_font_args(CLI::App& cmd, FontArgs& args) {
         ->check(CLI::NonNegativeNumber);
     cmd.add_option("--font-size", args.size_px, "Em size in pixels")
         ->capture_default_str()
-        ->type_name("PX");
+        ->type_name("PX")
+        ->check(parse_check(parse_font_size, "font-size"));
     cmd.add_option("--variations", args.variations,
                    "Variable-font axis values, comma-separated, e.g. \"wght=700,wdth=80\"")
         ->type_name("LIST")
@@ -43,26 +65,16 @@ Expected<std::vector<VariationSetting>> parse_variations(const std::string& spec
         auto eq = item.find('=');
         std::string tag = item.substr(0, eq);
         if (eq == std::string::npos || tag.empty() || tag.size() > 4)
-            return Error{"--variations '" + item + "': expected TAG=VALUE with a 1-4 letter tag"};
+            return Error{"'" + item + "': expected TAG=VALUE with a 1-4 letter tag"};
         std::string num = item.substr(eq + 1);
         char* end = nullptr;
         double value = std::strtod(num.c_str(), &end);
         if (num.empty() || end != num.c_str() + num.size() || !std::isfinite(value))
-            return Error{"--variations '" + item + "': '" + num + "' is not a number"};
+            return Error{"'" + item + "': '" + num + "' is not a number"};
         tag.resize(4, ' ');
         out.push_back({tag, value});
     }
     return out;
-}
-
-Status check_font_size(const FontArgs& args) {
-    // Written so that NaN fails too.
-    if (!(args.size_px > 0.0 && args.size_px <= kMaxFontSizePx)) {
-        std::ostringstream msg;
-        msg << "--font-size " << args.size_px << ": must be > 0 and <= " << kMaxFontSizePx;
-        return Error{msg.str()};
-    }
-    return ok_status();
 }
 
 Expected<Font> open_font(const FontArgs& args) {
@@ -76,7 +88,7 @@ Expected<Font> open_font(const FontArgs& args) {
     if (!font) return font.error();
     if (!args.variations.empty()) {
         auto settings = parse_variations(args.variations);
-        if (!settings) return settings.error();
+        if (!settings) return Error{"--variations: " + settings.error().message};
         auto set = font->set_variations(*settings);
         if (!set) {
             // The header promises the axis in the message, not the file; add the file if absent.

@@ -25,19 +25,18 @@ struct FontArgs {
 };
 
 // Registers FONT, --face-index, --font-size, --variations and --hinting on `cmd`, storing into
-// `args` (which must outlive parsing). Malformed values (a size that is not a number, a
-// variations string that does not parse) are usage errors reported by CLI11.
+// `args` (which must outlive parsing). Malformed values (a size that is not a number or not in
+// (0, kMaxFontSizePx], a variations string that does not parse) are usage errors reported by
+// CLI11 when the command line is parsed; a command's own default size is not checked.
 void add_font_args(CLI::App& cmd, FontArgs& args);
 
 // Parses "wght=700,wdth=80" (also "wght=700 wdth=80"); tags are 1–4 characters, padded with
-// spaces as OpenType does. The error names the bad item.
+// spaces as OpenType does. The error names the bad item, not the option (CLI11 adds
+// "--variations: " when it checks the option).
 Expected<std::vector<VariationSetting>> parse_variations(const std::string& spec);
 
 // Opens args.file at args.face_index and applies args.variations. Errors name the file and, for
 // variations, the axis; a missing file or a directory is reported as such before FreeType sees it.
 Expected<Font> open_font(const FontArgs& args);
-
-// Checks args.size_px against (0, kMaxFontSizePx]; the error names --font-size and its value.
-Status check_font_size(const FontArgs& args);
 
 }  // namespace bezel::cli

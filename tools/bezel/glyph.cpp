@@ -71,8 +71,6 @@ int run_glyph(const GlyphArgs& args) {
     if (!offset) return fail_usage(offset.error().message, kGlyphCommand);
     if (Status t = check_tolerance(args.tolerance_px); !t)
         return fail_usage(t.error().message, kGlyphCommand);
-    if (auto size_ok = check_font_size(args.font); !size_ok)
-        return fail_usage(size_ok.error().message, kGlyphCommand);
 
     GlyphRenderSettings settings;
     settings.size_px = args.font.size_px;

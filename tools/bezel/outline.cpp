@@ -23,8 +23,6 @@ struct OutlineArgs {
 int run_outline(const OutlineArgs& args) {
     auto format = choose_format(args.format, args.output_file, OutputFormat::Text);
     if (!format) return fail_usage(format.error().message, "bezel outline");
-    if (auto size_ok = check_font_size(args.font); !size_ok)
-        return fail_usage(size_ok.error().message, "bezel outline");
 
     auto font = open_font(args.font);
     if (!font) return fail_runtime(font.error().message);

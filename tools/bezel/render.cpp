@@ -150,7 +150,6 @@ int run_render(RenderArgs& args) {
     if (args.cmd->count("--hinting") > 0)
         return fail_usage("--hinting: render draws unhinted outlines (subpixel-positioned)", kRenderCommand);
     if (preview && args.cmd->count("--font-size") == 0) args.font.size_px = kDefaultPreviewSizePx;
-    if (auto ok = check_font_size(args.font); !ok) return fail_usage(ok.error().message, kRenderCommand);
     if (args.cmd->count("TEXT") + args.cmd->count("--text") + args.cmd->count("--text-file") > 1)
         return fail_usage("give the text once: TEXT, --text or --text-file", kRenderCommand);
 
@@ -160,7 +159,7 @@ int run_render(RenderArgs& args) {
     if (!features) return fail_usage("--features: " + features.error().message, kRenderCommand);
     options.shape.features = std::move(*features);
     auto variations = parse_variations(args.font.variations);
-    if (!variations) return fail_usage(variations.error().message, kRenderCommand);
+    if (!variations) return fail_usage("--variations: " + variations.error().message, kRenderCommand);
     options.shape.variations = std::move(*variations);
     auto direction = parse_direction(args.direction);
     if (!direction) return fail_usage(direction.error().message, kRenderCommand);
