@@ -113,9 +113,7 @@ int run_atlas(AtlasArgs& args) {
     // The JSON is written last: a toolkit that sees it can rely on the texture beside it.
     auto written = write_output(args.output_file, std::string(png->begin(), png->end()));
     if (!written) return fail_runtime(written.error().message);
-    written = write_output(args.json_file, doc.dump(2) + "\n");
-    if (!written) return fail_runtime(written.error().message);
-    return kExitOk;
+    return write_result(args.json_file, doc.dump(2) + "\n");
 }
 
 }  // namespace

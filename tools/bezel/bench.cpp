@@ -196,9 +196,7 @@ int run_bench(const BenchArgs& args) {
     if (!args.read_file.empty()) {
         auto rows = read_rows(args.read_file);
         if (!rows) return fail_runtime(rows.error().message);
-        auto written = write_output("", args.json ? format_json(*rows)
-                                                  : format_table(args.read_file, *rows));
-        return written ? kExitOk : fail_runtime(written.error().message);
+        return write_result("", args.json ? format_json(*rows) : format_table(args.read_file, *rows));
     }
     auto sizes = parse_sizes(args.sizes);
     if (!sizes) return fail_usage(sizes.error().message, kBenchCommand);
@@ -214,8 +212,7 @@ int run_bench(const BenchArgs& args) {
         if (!row) return fail_runtime(row.error().message);
         rows.push_back(*row);
     }
-    auto written = write_output("", args.json ? format_json(rows) : format_table(args.font, rows));
-    return written ? kExitOk : fail_runtime(written.error().message);
+    return write_result("", args.json ? format_json(rows) : format_table(args.font, rows));
 }
 
 }  // namespace

@@ -154,4 +154,9 @@ Status write_output(const std::string& output_file, std::string_view data) {
     return ok_status();
 }
 
+int write_result(const std::string& output_file, std::string_view data) {
+    auto written = write_output(output_file, data);
+    return written ? kExitOk : fail_runtime(written.error().message);
+}
+
 }  // namespace bezel::cli

@@ -69,5 +69,8 @@ Expected<OutputFormat> choose_format(const std::string& format_option,
 // (temporary file `<output_file>.tmp-XXXXXX` in the same directory, then rename). The error
 // names the file and the system's reason; no temporary file survives a failure.
 Status write_output(const std::string& output_file, std::string_view data);
+// The last step of a subcommand: write_output, then kExitOk, or the write's error reported by
+// fail_runtime.
+int write_result(const std::string& output_file, std::string_view data);
 
 }  // namespace bezel::cli

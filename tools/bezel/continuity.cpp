@@ -35,9 +35,7 @@ int run_continuity(const ContinuityArgs& args) {
     std::string document = *format == OutputFormat::Json
                                ? format_continuity_json(*joints, args.tolerance)
                                : format_continuity_text(*joints, args.tolerance);
-    auto written = write_output(args.output_file, document);
-    if (!written) return fail_runtime(written.error().message);
-    return kExitOk;
+    return write_result(args.output_file, document);
 }
 
 }  // namespace

@@ -21,6 +21,16 @@ std::string svg_number(double v) {
     return buf;
 }
 
+SvgFrame svg_frame(const Rect& box) {
+    const double size = std::max(box.width(), box.height());
+    const double scale = kDisplayPx / size;
+    std::string tag = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + svg_number(box.width() * scale) +
+                      "\" height=\"" + svg_number(box.height() * scale) + "\" viewBox=\"" + svg_number(box.x0) +
+                      ' ' + svg_number(box.y0) + ' ' + svg_number(box.width()) + ' ' +
+                      svg_number(box.height()) + "\">\n";
+    return {std::move(tag), size / kDisplayPx};
+}
+
 void stroke_polyline(const std::vector<Point>& pts, double hw, Polylines& out) {
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
         Vec2 d = pts[i + 1] - pts[i];

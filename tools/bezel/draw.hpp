@@ -1,5 +1,5 @@
-// tools/bezel/draw.hpp — the drawing pieces the CLI's pictures share (smooth, intersect): SVG
-// numbers, strokes as fillable polygons, and layered gray PNGs through bezel's own rasterizer.
+// tools/bezel/draw.hpp — the drawing pieces the CLI's pictures share (smooth, intersect,
+// stroke): the SVG frame and numbers, strokes as fillable polygons, and layered gray PNGs through bezel's own rasterizer.
 #pragma once
 
 #include <string>
@@ -18,6 +18,15 @@ inline constexpr double kPi = 3.14159265358979323846;
 
 // A number for SVG attributes and path data: 6 significant digits ("%.6g").
 std::string svg_number(double v);
+
+// A picture of `box` (the input's units, y down; not empty): `open_tag` is the <svg> element's
+// opening tag, with `box` as the viewBox and kDisplayPx display pixels on the longer side;
+// `unit` is one display pixel in the input's units, for stroke widths and dot sizes.
+struct SvgFrame {
+    std::string open_tag;
+    double unit;
+};
+SvgFrame svg_frame(const Rect& box);
 
 // Each polyline edge becomes a rectangle of half-width hw, extended by hw past both ends (square
 // caps, which also fill the joints). All rectangles wind the same way, so NonZero unions them.

@@ -102,9 +102,7 @@ int run_fill(const FillArgs& args) {
         }
         case FillFormat::Ascii: document = ascii_art(mask.view()); break;
     }
-    auto written = write_output(args.output_file, document);
-    if (!written) return fail_runtime(written.error().message);
-    return kExitOk;
+    return write_result(args.output_file, document);
 }
 
 }  // namespace

@@ -119,9 +119,7 @@ int run_glyph(const GlyphArgs& args) {
             break;
         }
     }
-    auto written = write_output(args.output_file, document);
-    if (!written) return fail_runtime(written.error().message);
-    return kExitOk;
+    return write_result(args.output_file, document);
 }
 
 }  // namespace

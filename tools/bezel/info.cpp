@@ -27,9 +27,7 @@ int run_info(const InfoArgs& args) {
     if (!info) return fail_runtime(info.error().message);
     const std::string document =
         *format == OutputFormat::Json ? format_info_json(*info) : format_info_text(*info);
-    auto written = write_output(args.output_file, document);
-    if (!written) return fail_runtime(written.error().message);
-    return kExitOk;
+    return write_result(args.output_file, document);
 }
 
 }  // namespace

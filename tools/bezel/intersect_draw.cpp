@@ -105,13 +105,10 @@ void ring(Point c, double r_out, double r_in, Polylines& out) {
 
 std::string format_intersect_svg(const IntersectReport& r) {
     Rect box = frame_of(r);
-    double size = std::max(box.width(), box.height());
-    double u = size / kDisplayPx;
-    double wpx = kDisplayPx * box.width() / size, hpx = kDisplayPx * box.height() / size;
+    const SvgFrame frame = svg_frame(box);
+    const double u = frame.unit;
     std::ostringstream s;
-    s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << svg_number(wpx) << "\" height=\"" << svg_number(hpx)
-      << "\" viewBox=\"" << svg_number(box.x0) << ' ' << svg_number(box.y0) << ' ' << svg_number(box.width()) << ' '
-      << svg_number(box.height()) << "\">\n";
+    s << frame.open_tag;
     s << "<title>bezel intersect: " << r.result.intersections.size() << " intersections, "
       << r.result.overlaps.size() << " overlaps</title>\n";
     s << "<rect x=\"" << svg_number(box.x0) << "\" y=\"" << svg_number(box.y0) << "\" width=\"" << svg_number(box.width())

@@ -62,9 +62,7 @@ int run_outline(const OutlineArgs& args) {
         case OutputFormat::Json: document = format_json(report); break;
         case OutputFormat::Svg: document = format_svg(report); break;
     }
-    auto written = write_output(args.output_file, document);
-    if (!written) return fail_runtime(written.error().message);
-    return kExitOk;
+    return write_result(args.output_file, document);
 }
 
 }  // namespace

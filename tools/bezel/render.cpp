@@ -224,9 +224,7 @@ int run_render(RenderArgs& args) {
         if (!bytes) return fail_runtime(destination + ": " + bytes.error().message);
     }
     if (!bytes) return fail_runtime(bytes.error().message);
-    auto written = write_output(args.output_file, *bytes);
-    if (!written) return fail_runtime(written.error().message);
-    return kExitOk;
+    return write_result(args.output_file, *bytes);
 }
 
 }  // namespace

@@ -81,13 +81,10 @@ void disc(Point c, double r, Polylines& out) {
 
 std::string format_smooth_svg(const SmoothReport& r) {
     Rect box = frame_of(r);
-    double size = std::max(box.width(), box.height());
-    double u = size / kDisplayPx;
-    double wpx = kDisplayPx * box.width() / size, hpx = kDisplayPx * box.height() / size;
+    const SvgFrame frame = svg_frame(box);
+    const double u = frame.unit;
     std::ostringstream s;
-    s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << svg_number(wpx) << "\" height=\"" << svg_number(hpx)
-      << "\" viewBox=\"" << svg_number(box.x0) << ' ' << svg_number(box.y0) << ' ' << svg_number(box.width()) << ' '
-      << svg_number(box.height()) << "\">\n";
+    s << frame.open_tag;
     s << "<title>bezel smooth --method " << r.method << ": " << r.input.size() << " points, "
       << (r.polyline ? r.points.size() : r.curve.segment_count())
       << (r.polyline ? " polygon points" : " pieces") << (r.closed ? ", closed" : "") << "</title>\n";

@@ -180,9 +180,7 @@ int run_stroke(const StrokeArgs& args) {
             break;
         }
     }
-    auto written = write_output(args.output_file, document);
-    if (!written) return fail_runtime(written.error().message);
-    return kExitOk;
+    return write_result(args.output_file, document);
 }
 
 }  // namespace

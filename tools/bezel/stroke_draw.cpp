@@ -27,13 +27,10 @@ std::string format_stroke_svg(const Path& source, const Path& outline, const Str
     if (box.is_empty()) box = {0, 0, 1, 1};
     double size = std::max({box.width(), box.height(), 1e-9});
     box = box.inflated(0.05 * size);
-    size = std::max(box.width(), box.height());
-    double u = size / kDisplayPx;
+    const SvgFrame frame = svg_frame(box);
+    const double u = frame.unit;
     std::ostringstream s;
-    s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << svg_number(kDisplayPx * box.width() / size)
-      << "\" height=\"" << svg_number(kDisplayPx * box.height() / size) << "\" viewBox=\""
-      << svg_number(box.x0) << ' ' << svg_number(box.y0) << ' ' << svg_number(box.width()) << ' '
-      << svg_number(box.height()) << "\">\n";
+    s << frame.open_tag;
     s << "<title>bezel stroke --width " << svg_number(style.width) << " --join "
       << join_name(style.join) << " --cap " << cap_name(style.cap);
     if (!style.dashes.empty()) {

@@ -178,9 +178,7 @@ int run_surface(const SurfaceArgs& args) {
         if (!png) return fail_runtime(png.error().message);
         document.assign(png->begin(), png->end());
     }
-    auto written = write_output(args.output_file, document);
-    if (!written) return fail_runtime(written.error().message);
-    return kExitOk;
+    return write_result(args.output_file, document);
 }
 
 }  // namespace
