@@ -64,12 +64,11 @@ Expected<std::vector<double>> parse_sizes(const std::string& text) {
     std::stringstream in(text);
     std::string item;
     while (std::getline(in, item, ',')) {
-        char* end = nullptr;
-        const double v = std::strtod(item.c_str(), &end);
-        if (item.empty() || end != item.c_str() + item.size() || !(v > 0 && v <= kMaxBenchSizePx))
+        const std::optional<double> v = parse_number(item);
+        if (!v || !(*v > 0 && *v <= kMaxBenchSizePx))
             return Error{"--sizes '" + text + "': '" + item + "' is not a size in (0, " +
                          std::to_string(int(kMaxBenchSizePx)) + "] px"};
-        out.push_back(v);
+        out.push_back(*v);
     }
     if (out.empty() || out.size() > kMaxBenchSizes)
         return Error{"--sizes '" + text + "': expected 1 to " + std::to_string(kMaxBenchSizes) +

@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -32,6 +33,13 @@ std::string version_string() { return std::string("bezel ") + BEZEL_VERSION; }
 Expected<std::u32string> decode_utf8(std::string_view text) { return bezel::decode_utf8(text); }
 
 void append_utf8(std::string& out, char32_t cp) { bezel::append_utf8(out, cp); }
+
+std::optional<double> parse_number(const std::string& text) {
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size()) return std::nullopt;
+    return v;
+}
 
 Expected<char32_t> parse_code_point(std::string_view arg) {
     const std::string quoted = "'" + std::string(arg) + "'";

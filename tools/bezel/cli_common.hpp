@@ -53,6 +53,11 @@ Expected<char32_t> parse_code_point(std::string_view arg);
 // "U+0067" (at least four hex digits, upper case).
 std::string format_code_point(char32_t code_point);
 
+// The whole of `text` read as one number (strtod's syntax, so also "nan", "inf" and hex floats:
+// callers that want a finite value or a range test for it); nullopt when `text` is empty or has
+// anything after the number.
+std::optional<double> parse_number(const std::string& text);
+
 enum class OutputFormat { Text, Json, Svg };
 // "text", "json", "svg".
 const char* format_name(OutputFormat format);

@@ -1,5 +1,6 @@
 // tools/bezel/draw.hpp — the drawing pieces the CLI's pictures share (smooth, intersect,
-// stroke): the SVG frame and numbers, strokes as fillable polygons, and layered gray PNGs through bezel's own rasterizer.
+// stroke): the SVG frame and numbers, strokes as fillable polygons, and layered gray PNGs
+// through bezel's own rasterizer.
 #pragma once
 
 #include <string>

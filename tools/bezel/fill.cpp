@@ -2,7 +2,6 @@
 // as PNG, PGM or ASCII art.
 #include <CLI/CLI.hpp>
 #include <cmath>
-#include <cstdlib>
 #include <memory>
 
 #include "bezel/image.hpp"
@@ -47,11 +46,11 @@ Expected<Affine> parse_transform(const std::string& text) {
         const std::size_t comma = i < 5 ? text.find(',', at) : text.size();
         if (comma == std::string::npos) break;
         const std::string item = text.substr(at, comma - at);
-        char* end = nullptr;
-        v[i] = std::strtod(item.c_str(), &end);
-        if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(v[i]))
+        const std::optional<double> number = parse_number(item);
+        if (!number || !std::isfinite(*number))
             return Error{"--transform '" + text + "': item " + std::to_string(i + 1) + " '" +
                          item + "' is not a finite number"};
+        v[i] = *number;
         at = comma + 1;
         if (i == 5) return Affine{v[0], v[1], v[2], v[3], v[4], v[5]};
     }

@@ -2,10 +2,10 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
+#include "cli_common.hpp"
 #include "parse_check.hpp"
 
 namespace bezel::cli {
@@ -16,17 +16,15 @@ namespace {
 // CLI11 converts it, so that "big" gets this message rather than CLI11's "Could not convert".
 // The message leaves the option's name to CLI11 ("--font-size: '0': ...").
 Expected<double> parse_font_size(const std::string& text) {
-    char* end = nullptr;
-    const double px = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size())
-        return Error{"'" + text + "': not a number"};
+    const std::optional<double> px = parse_number(text);
+    if (!px) return Error{"'" + text + "': not a number"};
     // Written so that NaN fails too.
-    if (!(px > 0.0 && px <= kMaxFontSizePx)) {
+    if (!(*px > 0.0 && *px <= kMaxFontSizePx)) {
         std::ostringstream msg;
         msg << "'" << text << "': must be > 0 and <= " << kMaxFontSizePx;
         return Error{msg.str()};
     }
-    return px;
+    return *px;
 }
 
 }  // namespace
@@ -67,12 +65,11 @@ Expected<std::vector<VariationSetting>> parse_variations(const std::string& spec
         if (eq == std::string::npos || tag.empty() || tag.size() > 4)
             return Error{"'" + item + "': expected TAG=VALUE with a 1-4 letter tag"};
         std::string num = item.substr(eq + 1);
-        char* end = nullptr;
-        double value = std::strtod(num.c_str(), &end);
-        if (num.empty() || end != num.c_str() + num.size() || !std::isfinite(value))
+        const std::optional<double> value = parse_number(num);
+        if (!value || !std::isfinite(*value))
             return Error{"'" + item + "': '" + num + "' is not a number"};
         tag.resize(4, ' ');
-        out.push_back({tag, value});
+        out.push_back({tag, *value});
     }
     return out;
 }

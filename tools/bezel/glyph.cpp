@@ -46,10 +46,10 @@ Expected<Vec2> parse_offset(const std::string& text) {
     std::string parts[2] = {text.substr(0, comma),
                             comma == std::string::npos ? std::string() : text.substr(comma + 1)};
     for (int i = 0; i < 2; ++i) {
-        char* end = nullptr;
-        v[i] = std::strtod(parts[i].c_str(), &end);
-        if (parts[i].empty() || end != parts[i].c_str() + parts[i].size() || !std::isfinite(v[i]))
+        const std::optional<double> number = parse_number(parts[i]);
+        if (!number || !std::isfinite(*number))
             return Error{"--offset '" + text + "': expected DX,DY (two numbers, pixels)"};
+        v[i] = *number;
         if (std::fabs(v[i]) > kMaxGlyphOffsetPx)
             return Error{"--offset '" + text + "': beyond ±" + std::to_string(int(kMaxGlyphOffsetPx)) +
                          " px (kMaxGlyphOffsetPx)"};
