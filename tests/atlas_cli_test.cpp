@@ -60,7 +60,7 @@ TEST(AtlasCli, RectanglesArePaddedAndHoldTheGlyphs) {
         ASSERT_TRUE(box);
         EXPECT_EQ(g["left"].get<int>(), box->left);
         EXPECT_EQ(g["top"].get<int>(), box->top);
-        EXPECT_EQ(g["advance"].get<double>(), box->advance);
+        EXPECT_EQ(g["advance"].get<double>(), box->advance_px);
         ASSERT_EQ(gw, box->width);
         ASSERT_EQ(gh, box->height);
         if (gw == 0) continue;

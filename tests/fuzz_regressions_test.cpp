@@ -54,8 +54,8 @@ TEST(FuzzRegressions, ShapingAtA4em297PxSizeGivesFinitePositionsOrAnError) {
         return;
     }
     for (const ShapedGlyph& g : run->glyphs) {
-        EXPECT_TRUE(std::isfinite(g.x_advance) && std::isfinite(g.y_advance)) << g.gid;
-        EXPECT_TRUE(std::isfinite(g.x_offset) && std::isfinite(g.y_offset)) << g.gid;
+        EXPECT_TRUE(std::isfinite(g.x_advance_px) && std::isfinite(g.y_advance_px)) << g.gid;
+        EXPECT_TRUE(std::isfinite(g.x_offset_px) && std::isfinite(g.y_offset_px)) << g.gid;
     }
 }
 

@@ -103,7 +103,7 @@ TEST(GlyphCache, BitmapEqualsADirectRenderAtTheBinOffset) {
         const CachedGlyph& g = **cached;
         EXPECT_EQ(g.box.left, box->left);
         EXPECT_EQ(g.box.top, box->top);
-        EXPECT_EQ(g.box.advance, box->advance);
+        EXPECT_EQ(g.box.advance_px, box->advance_px);
         EXPECT_EQ(to_mask(g.mask), direct);
     }
 }

@@ -196,7 +196,7 @@ TEST(GlyphRasterizer, BlankGlyphHasAnAdvanceAndNoBox) {
     ASSERT_TRUE(box) << box.error().message;
     EXPECT_EQ(box->width, 0);
     EXPECT_EQ(box->height, 0);
-    EXPECT_NEAR(box->advance, 24 * 651.0 / 2048.0, 1e-6);   // DejaVu's space: 651 units of 2048
+    EXPECT_NEAR(box->advance_px, 24 * 651.0 / 2048.0, 1e-6);   // DejaVu's space: 651 units of 2048
 }
 
 TEST(GlyphRasterizer, RefusesBadInput) {

@@ -7,7 +7,17 @@
 #include <string>
 #include <vector>
 
+#include "bezel/flatten.hpp"
+#include "bezel/font.hpp"
+#include "bezel/image.hpp"
+#include "bezel/intersect.hpp"
 #include "bezel/limits.hpp"
+#include "bezel/path.hpp"
+#include "bezel/raster.hpp"
+#include "bezel/smooth.hpp"
+#include "bezel/stroke.hpp"
+#include "bezel/surface.hpp"
+#include "bezel/text.hpp"
 
 namespace bezel {
 namespace {

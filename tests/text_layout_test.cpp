@@ -76,15 +76,15 @@ TEST(Layout, NoWidthKeepsOneLinePerParagraph) {
     Fixture s = open_setup(kEdge);
     const TextLayout l = lay(s, "AA BB", LayoutOptions{});
     ASSERT_EQ(l.lines.size(), 1u);
-    EXPECT_DOUBLE_EQ(l.lines[0].width, 27);
-    EXPECT_DOUBLE_EQ(l.width, 27);
-    EXPECT_DOUBLE_EQ(l.height, 10);   // ascender − descender
-    EXPECT_DOUBLE_EQ(l.lines[0].baseline_y, 8);
+    EXPECT_DOUBLE_EQ(l.lines[0].width_px, 27);
+    EXPECT_DOUBLE_EQ(l.width_px, 27);
+    EXPECT_DOUBLE_EQ(l.height_px, 10);   // ascender − descender
+    EXPECT_DOUBLE_EQ(l.lines[0].baseline_y_px, 8);
     const double xs[] = {0, 6, 12, 15, 21};
     ASSERT_EQ(l.glyphs.size(), 5u);
     for (std::size_t i = 0; i < 5; ++i) {
-        EXPECT_DOUBLE_EQ(l.glyphs[i].x, xs[i]) << i;
-        EXPECT_DOUBLE_EQ(l.glyphs[i].y, 8) << i;
+        EXPECT_DOUBLE_EQ(l.glyphs[i].x_px, xs[i]) << i;
+        EXPECT_DOUBLE_EQ(l.glyphs[i].y_px, 8) << i;
         EXPECT_EQ(l.glyphs[i].cluster, i);
     }
 }
@@ -98,11 +98,11 @@ TEST(Layout, WrapsAfterSpacesAtTheExactWidth) {
     EXPECT_EQ(line_texts(l, text), (Lines{"AA ", "BB"}));
     // The trailing space hangs: not placed, not counted.
     EXPECT_EQ(l.lines[0].glyph_count, 2u);
-    EXPECT_DOUBLE_EQ(l.lines[0].width, 12);
-    EXPECT_DOUBLE_EQ(l.lines[1].baseline_y, 18);
-    EXPECT_DOUBLE_EQ(l.glyphs[2].x, 0);   // B starts the second line
-    EXPECT_DOUBLE_EQ(l.width, 26.99);
-    EXPECT_DOUBLE_EQ(l.height, 20);
+    EXPECT_DOUBLE_EQ(l.lines[0].width_px, 12);
+    EXPECT_DOUBLE_EQ(l.lines[1].baseline_y_px, 18);
+    EXPECT_DOUBLE_EQ(l.glyphs[2].x_px, 0);   // B starts the second line
+    EXPECT_DOUBLE_EQ(l.width_px, 26.99);
+    EXPECT_DOUBLE_EQ(l.height_px, 20);
     // A line holds as many words as fit: "AA BB" + " AA" is 36, so 35 breaks after BB.
     EXPECT_EQ(line_texts(lay(s, "AA BB AA B", wrap_at(35)), "AA BB AA B"),
               (Lines{"AA BB ", "AA B"}));
@@ -113,7 +113,7 @@ TEST(Layout, SpacesBeyondTheWidthHang) {
     const std::string text = "AA    BB";
     const TextLayout l = lay(s, text, wrap_at(12));
     EXPECT_EQ(line_texts(l, text), (Lines{"AA    ", "BB"}));
-    EXPECT_DOUBLE_EQ(l.lines[0].width, 12);
+    EXPECT_DOUBLE_EQ(l.lines[0].width_px, 12);
 }
 
 TEST(Layout, WordWiderThanTheLineBreaksBetweenClusters) {
@@ -147,14 +147,14 @@ TEST(Layout, NewlinesStartLinesAndEmptyLinesCount) {
     ASSERT_EQ(l.lines.size(), 6u);
     EXPECT_EQ(l.lines[2].glyph_count, 0u);
     for (std::size_t i = 0; i < l.lines.size(); ++i)
-        EXPECT_DOUBLE_EQ(l.lines[i].baseline_y, 8 + 10.0 * i);
-    EXPECT_DOUBLE_EQ(l.height, 10 + 5 * 10);
+        EXPECT_DOUBLE_EQ(l.lines[i].baseline_y_px, 8 + 10.0 * i);
+    EXPECT_DOUBLE_EQ(l.height_px, 10 + 5 * 10);
     // A trailing newline makes a last, empty line; an empty text is one empty line.
     EXPECT_EQ(lay(s, "A\n", LayoutOptions{}).lines.size(), 2u);
     const TextLayout empty = lay(s, "", LayoutOptions{});
     ASSERT_EQ(empty.lines.size(), 1u);
     EXPECT_TRUE(empty.glyphs.empty());
-    EXPECT_DOUBLE_EQ(empty.height, 10);
+    EXPECT_DOUBLE_EQ(empty.height_px, 10);
 }
 
 // --- Alignment, margins, line height -------------------------------------------------------
@@ -163,17 +163,17 @@ TEST(Layout, AlignmentPlacesLinesInTheWidth) {
     Fixture s = open_setup(kEdge);
     LayoutOptions o = wrap_at(100);
     o.align = Align::Center;
-    EXPECT_DOUBLE_EQ(lay(s, "AA", o).glyphs[0].x, 44);
+    EXPECT_DOUBLE_EQ(lay(s, "AA", o).glyphs[0].x_px, 44);
     o.align = Align::End;
-    EXPECT_DOUBLE_EQ(lay(s, "AA", o).glyphs[0].x, 88);
+    EXPECT_DOUBLE_EQ(lay(s, "AA", o).glyphs[0].x_px, 88);
     o.align = Align::Start;
-    EXPECT_DOUBLE_EQ(lay(s, "AA", o).glyphs[0].x, 0);
+    EXPECT_DOUBLE_EQ(lay(s, "AA", o).glyphs[0].x_px, 0);
     // Without a width, lines align within the widest one.
     LayoutOptions free;
     free.align = Align::End;
     const TextLayout l = lay(s, "AAAA\nA", free);
-    EXPECT_DOUBLE_EQ(l.width, 24);
-    EXPECT_DOUBLE_EQ(l.glyphs[4].x, 18);
+    EXPECT_DOUBLE_EQ(l.width_px, 24);
+    EXPECT_DOUBLE_EQ(l.glyphs[4].x_px, 18);
 }
 
 TEST(Layout, MarginsSurroundTheBlockAndLineHeightScales) {
@@ -183,11 +183,11 @@ TEST(Layout, MarginsSurroundTheBlockAndLineHeightScales) {
     o.line_height = 1.5;
     const TextLayout l = lay(s, "AA BB", o);
     ASSERT_EQ(l.lines.size(), 2u);
-    EXPECT_DOUBLE_EQ(l.glyphs[0].x, 5);
-    EXPECT_DOUBLE_EQ(l.lines[0].baseline_y, 5 + 8);
-    EXPECT_DOUBLE_EQ(l.lines[1].baseline_y, 5 + 8 + 15);
-    EXPECT_DOUBLE_EQ(l.width, 12 + 10);
-    EXPECT_DOUBLE_EQ(l.height, 5 + 10 + 15 + 5);
+    EXPECT_DOUBLE_EQ(l.glyphs[0].x_px, 5);
+    EXPECT_DOUBLE_EQ(l.lines[0].baseline_y_px, 5 + 8);
+    EXPECT_DOUBLE_EQ(l.lines[1].baseline_y_px, 5 + 8 + 15);
+    EXPECT_DOUBLE_EQ(l.width_px, 12 + 10);
+    EXPECT_DOUBLE_EQ(l.height_px, 5 + 10 + 15 + 5);
 }
 
 TEST(Layout, LineHeightComesFromTheFontsMetrics) {
@@ -195,8 +195,8 @@ TEST(Layout, LineHeightComesFromTheFontsMetrics) {
     const TextLayout l = lay(s, "a\nb", LayoutOptions{}, at_size(20));
     const double scale = 20.0 / s.metrics.units_per_em;
     ASSERT_EQ(l.lines.size(), 2u);
-    EXPECT_NEAR(l.lines[0].baseline_y, s.metrics.ascender * scale, 1e-9);
-    EXPECT_NEAR(l.lines[1].baseline_y - l.lines[0].baseline_y,
+    EXPECT_NEAR(l.lines[0].baseline_y_px, s.metrics.ascender * scale, 1e-9);
+    EXPECT_NEAR(l.lines[1].baseline_y_px - l.lines[0].baseline_y_px,
                 (s.metrics.ascender - s.metrics.descender + s.metrics.line_gap) * scale, 1e-9);
 }
 
@@ -212,9 +212,9 @@ TEST(Layout, RtlParagraphStartsAtTheRight) {
     // Visual order: the last letter leftmost; the line ends at the right edge.
     EXPECT_EQ(l.glyphs.front().cluster, 6u);
     EXPECT_EQ(l.glyphs.back().cluster, 0u);
-    EXPECT_NEAR(l.glyphs.front().x, 200 - l.lines[0].width, 1e-9);
+    EXPECT_NEAR(l.glyphs.front().x_px, 200 - l.lines[0].width_px, 1e-9);
     o.align = Align::End;   // End of an RTL paragraph is the left
-    EXPECT_NEAR(lay(s, text, o, at_size(20)).glyphs.front().x, 0, 1e-9);
+    EXPECT_NEAR(lay(s, text, o, at_size(20)).glyphs.front().x_px, 0, 1e-9);
 }
 
 TEST(Layout, MixedDirectionsOrderRunsByLevel) {
@@ -225,7 +225,7 @@ TEST(Layout, MixedDirectionsOrderRunsByLevel) {
     std::vector<std::uint32_t> clusters;
     for (const PlacedGlyph& g : l.glyphs) clusters.push_back(g.cluster);
     EXPECT_EQ(clusters, (std::vector<std::uint32_t>{0, 1, 2, 7, 5, 3, 9, 10, 11}));
-    for (std::size_t i = 1; i < l.glyphs.size(); ++i) EXPECT_GT(l.glyphs[i].x, l.glyphs[i - 1].x);
+    for (std::size_t i = 1; i < l.glyphs.size(); ++i) EXPECT_GT(l.glyphs[i].x_px, l.glyphs[i - 1].x_px);
 
     // RTL paragraph: the Latin run (level 2) keeps its order, leftmost; the Hebrew run and the
     // space between (level 1) follow it, reversed.
@@ -251,7 +251,7 @@ TEST(Layout, ExplicitDirectionOverridesTheText) {
     // Latin letters in an RTL paragraph keep their order and the line starts at the right.
     ASSERT_EQ(l.glyphs.size(), 2u);
     EXPECT_EQ(l.glyphs[0].cluster, 0u);
-    EXPECT_DOUBLE_EQ(l.glyphs[0].x, 88);
+    EXPECT_DOUBLE_EQ(l.glyphs[0].x_px, 88);
 }
 
 TEST(Layout, ArabicWordCutMidWordIsReshapedPerLine) {
@@ -259,7 +259,7 @@ TEST(Layout, ArabicWordCutMidWordIsReshapedPerLine) {
     // Dual-joining letters only: every letter changes form when its neighbour moves to another line.
     const std::string word = "سبلعمنهيكسبلعمنهيك";
     const TextLayout whole = lay(s, word, LayoutOptions{}, at_size(20));
-    const TextLayout cut = lay(s, word, wrap_at(whole.lines[0].width / 2), at_size(20));
+    const TextLayout cut = lay(s, word, wrap_at(whole.lines[0].width_px / 2), at_size(20));
     ASSERT_GE(cut.lines.size(), 2u);
     // Every character is on exactly one line, and lines cover the text in order.
     EXPECT_EQ(cut.lines.front().text_begin, 0u);
@@ -268,7 +268,7 @@ TEST(Layout, ArabicWordCutMidWordIsReshapedPerLine) {
         EXPECT_EQ(cut.lines[i].text_begin, cut.lines[i - 1].text_end);
     // Each line fits once reshaped.
     for (const LaidOutLine& line : cut.lines)
-        EXPECT_LE(line.width, whole.lines[0].width / 2 + 1e-6);
+        EXPECT_LE(line.width_px, whole.lines[0].width_px / 2 + 1e-6);
     // The letters at a cut lose their joining to the other line: reshaped, not sliced, so the
     // glyph at the end of the first line (visually leftmost) is a final form that the whole
     // word did not have at that cluster.

@@ -213,13 +213,13 @@ TEST(Shaper, MatchesHbShapeOnGoldenCases) {
             const Expected1& e = expected[i];
             EXPECT_EQ(g.gid, e.gid) << "glyph " << i;
             EXPECT_EQ(g.cluster, e.cluster) << "glyph " << i;
-            EXPECT_NEAR(g.x_advance, e.x_advance, 1e-6) << "glyph " << i;
-            EXPECT_NEAR(g.y_advance, -e.y_advance, 1e-6) << "glyph " << i;
-            EXPECT_NEAR(g.x_offset, e.x_offset, 1e-6) << "glyph " << i;
-            EXPECT_NEAR(g.y_offset, -e.y_offset, 1e-6) << "glyph " << i;
+            EXPECT_NEAR(g.x_advance_px, e.x_advance, 1e-6) << "glyph " << i;
+            EXPECT_NEAR(g.y_advance_px, -e.y_advance, 1e-6) << "glyph " << i;
+            EXPECT_NEAR(g.x_offset_px, e.x_offset, 1e-6) << "glyph " << i;
+            EXPECT_NEAR(g.y_offset_px, -e.y_offset, 1e-6) << "glyph " << i;
             advance += e.x_advance;
         }
-        EXPECT_NEAR(run.advance, advance, 1e-6);
+        EXPECT_NEAR(run.advance_px, advance, 1e-6);
         ++cases;
     }
     EXPECT_GE(cases, 20);
@@ -235,9 +235,9 @@ TEST(Shaper, LigaOffSplitsTheFiLigatureAndKernOffWidensAV) {
     o.features = *parse_features("-liga");
     EXPECT_EQ(shape_ok(shaper, "fi", o).glyphs.size(), 2u);
     o.features.clear();
-    const double kerned = shape_ok(shaper, "AV", o).advance;
+    const double kerned = shape_ok(shaper, "AV", o).advance_px;
     o.features = *parse_features("-kern");
-    const double plain = shape_ok(shaper, "AV", o).advance;
+    const double plain = shape_ok(shaper, "AV", o).advance_px;
     EXPECT_NEAR(plain - kerned, 1401 - 1270, 1e-6);   // DejaVu's A–V kerning, font units
 }
 
@@ -249,21 +249,21 @@ TEST(Shaper, AdvancesScaleLinearlyWithSizeAtSubpixelPrecision) {
     const ShapedRun run = shape_ok(shaper, "AW", o);
     ASSERT_EQ(run.glyphs.size(), 2u);
     // 1/1024 px units: within 1e-3 px of the exact scaled advance.
-    EXPECT_NEAR(run.glyphs[0].x_advance, 1401 * 13.3 / 2048, 1e-3);
-    EXPECT_NEAR(run.glyphs[1].x_advance, 2025 * 13.3 / 2048, 1e-3);
+    EXPECT_NEAR(run.glyphs[0].x_advance_px, 1401 * 13.3 / 2048, 1e-3);
+    EXPECT_NEAR(run.glyphs[1].x_advance_px, 2025 * 13.3 / 2048, 1e-3);
 }
 
 TEST(Shaper, VariationsChangeAdvancesAndAreValidated) {
     Shaper shaper = open_shaper(kVariable);
     ShapeOptions o;
     o.size_px = 1000;
-    EXPECT_NEAR(shape_ok(shaper, "I", o).advance, 400, 1e-6);
+    EXPECT_NEAR(shape_ok(shaper, "I", o).advance_px, 400, 1e-6);
     o.variations = {{"wght", 900}};
-    EXPECT_NEAR(shape_ok(shaper, "I", o).advance, 600, 1e-6);
+    EXPECT_NEAR(shape_ok(shaper, "I", o).advance_px, 600, 1e-6);
     o.variations = {{"wght", 250}};   // −100 at 100, linear: 400 − 100·(150/300)
-    EXPECT_NEAR(shape_ok(shaper, "I", o).advance, 350, 1e-6);
+    EXPECT_NEAR(shape_ok(shaper, "I", o).advance_px, 350, 1e-6);
     o.variations.clear();   // back to the default instance
-    EXPECT_NEAR(shape_ok(shaper, "I", o).advance, 400, 1e-6);
+    EXPECT_NEAR(shape_ok(shaper, "I", o).advance_px, 400, 1e-6);
 
     o.variations = {{"wdth", 100}};
     auto unknown = shaper.shape("I", o);
@@ -326,7 +326,7 @@ TEST(Shaper, RepeatedShapingGivesIdenticalRuns) {
     ASSERT_EQ(a.glyphs.size(), b.glyphs.size());
     for (std::size_t i = 0; i < a.glyphs.size(); ++i) {
         EXPECT_EQ(a.glyphs[i].gid, b.glyphs[i].gid);
-        EXPECT_EQ(a.glyphs[i].x_advance, b.glyphs[i].x_advance);
+        EXPECT_EQ(a.glyphs[i].x_advance_px, b.glyphs[i].x_advance_px);
     }
 }
 
@@ -334,7 +334,7 @@ TEST(Shaper, EmptyTextShapesToNoGlyphs) {
     Shaper shaper = open_shaper(kDejaVu);
     const ShapedRun run = shape_ok(shaper, "", ShapeOptions{});
     EXPECT_TRUE(run.glyphs.empty());
-    EXPECT_EQ(run.advance, 0);
+    EXPECT_EQ(run.advance_px, 0);
 }
 
 TEST(Shaper, CollectionFacesOpenByIndex) {
@@ -342,7 +342,7 @@ TEST(Shaper, CollectionFacesOpenByIndex) {
     ShapeOptions o;
     o.size_px = 1000;
     o.variations = {{"wght", 900}};
-    EXPECT_NEAR(shape_ok(face1, "I", o).advance, 600, 1e-6);
+    EXPECT_NEAR(shape_ok(face1, "I", o).advance_px, 600, 1e-6);
     auto bad = Shaper::open(kCollection, 2);
     ASSERT_FALSE(bad.ok());
     EXPECT_EQ(bad.error().message, kCollection + ": face index 2 out of range (0..1)");

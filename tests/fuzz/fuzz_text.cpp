@@ -48,7 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (run) {
         for (const auto& g : run->glyphs) {
             BEZEL_FUZZ_CHECK(g.cluster <= text.size());
-            BEZEL_FUZZ_CHECK(std::isfinite(g.x_advance) && std::isfinite(g.x_offset));
+            BEZEL_FUZZ_CHECK(std::isfinite(g.x_advance_px) && std::isfinite(g.x_offset_px));
         }
     } else if (!valid_utf8) {
         BEZEL_FUZZ_CHECK(!run.error().message.empty());
@@ -58,7 +58,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     auto layout = bezel::layout_text(*shaper, font->metrics(), text, options.shape, options.layout);
     if (layout) {
         for (const auto& g : layout->glyphs) {
-            BEZEL_FUZZ_CHECK(std::isfinite(g.x) && std::isfinite(g.y));
+            BEZEL_FUZZ_CHECK(std::isfinite(g.x_px) && std::isfinite(g.y_px));
             BEZEL_FUZZ_CHECK(g.cluster <= text.size());
         }
         for (const auto& line : layout->lines)

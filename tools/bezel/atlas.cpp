@@ -99,7 +99,7 @@ int run_atlas(AtlasArgs& args) {
                           {"gid", e.gid},          {"x", r.x},
                           {"y", r.y},              {"width", r.width},
                           {"height", r.height},    {"left", e.box.left},
-                          {"top", e.box.top},      {"advance", e.box.advance}});
+                          {"top", e.box.top},      {"advance", e.box.advance_px}});
     }
     nlohmann::ordered_json doc = {{"font", args.font.file},
                                   {"size_px", args.font.size_px},

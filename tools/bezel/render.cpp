@@ -102,7 +102,7 @@ Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
     auto layout = layout_text(renderer.shaper(), font.metrics(), text, options.shape,
                               options.layout);
     if (!layout) return layout.error();
-    const double w = std::ceil(layout->width), h = std::ceil(layout->height);
+    const double w = std::ceil(layout->width_px), h = std::ceil(layout->height_px);
     if (!(w <= kMaxImageDim && h <= kMaxImageDim && w * h <= kMaxOutlinedPagePixels))
         return Error{"text page of " + std::to_string(static_cast<long>(w)) + "x" +
                      std::to_string(static_cast<long>(h)) + " px is too large"};
@@ -124,13 +124,13 @@ Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
         const Rect b = stroked->bounds();
         // The glyph's box in page pixels, clipped to the page (a pen far off the page draws
         // nothing, and the box never exceeds the page).
-        const double x0 = std::max(0.0, std::floor(g.x + b.x0));
-        const double y0 = std::max(0.0, std::floor(g.y + b.y0));
-        const double x1 = std::min<double>(page.width(), std::ceil(g.x + b.x1));
-        const double y1 = std::min<double>(page.height(), std::ceil(g.y + b.y1));
+        const double x0 = std::max(0.0, std::floor(g.x_px + b.x0));
+        const double y0 = std::max(0.0, std::floor(g.y_px + b.y0));
+        const double x1 = std::min<double>(page.width(), std::ceil(g.x_px + b.x1));
+        const double y1 = std::min<double>(page.height(), std::ceil(g.y_px + b.y1));
         if (!(x1 > x0 && y1 > y0)) continue;
         coverage = Mask(static_cast<int>(x1 - x0), static_cast<int>(y1 - y0));
-        auto filled = rasterizer.fill_path(*stroked, Affine::translate({g.x - x0, g.y - y0}),
+        auto filled = rasterizer.fill_path(*stroked, Affine::translate({g.x_px - x0, g.y_px - y0}),
                                            FillRule::NonZero, OverlapMode::Accurate,
                                            coverage.view());
         if (!filled) return filled.error();

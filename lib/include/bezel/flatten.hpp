@@ -29,6 +29,7 @@
 
 #include "bezel/expected.hpp"
 #include "bezel/geometry.hpp"
+#include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
 namespace bezel {
@@ -50,16 +51,6 @@ enum class FlattenMethod {
 };
 
 // --- Limits ------------------------------------------------------------------------------------
-// Deepest halving of one curve by the recursive methods: at most 2^16 pieces per curve.
-inline constexpr int kMaxFlattenDepth = 16;
-// Most line segments one curve may become, for every method. A curve that needs more (a curve of
-// extent E pixels needs about √(E / tol) segments, so E/tol > ~10⁹) gets exactly this many, evenly
-// spaced, and its bound is not met: flatten() accepts that silently, flatten_checked() reports it.
-inline constexpr std::size_t kMaxSegmentsPerCurve = std::size_t{1} << kMaxFlattenDepth;
-// Largest coordinate magnitude accepted after the transform: 2^50 px. Beyond it a double cannot
-// hold 1/8-pixel steps, so no tolerance is meaningful, and the bound keeps every square and cross
-// product in the methods far from overflow.
-inline constexpr double kMaxFlattenCoordinatePx = 1125899906842624.0;  // 2^50
 // Smallest tolerance used; flatten() raises smaller (or NaN) tolerances to it.
 inline constexpr double kMinFlattenTolerancePx = 1e-9;
 

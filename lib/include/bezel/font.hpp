@@ -18,6 +18,7 @@
 #include "bezel/expected.hpp"
 #include "bezel/geometry.hpp"
 #include "bezel/image.hpp"
+#include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
 namespace bezel {
@@ -87,12 +88,6 @@ struct GlyphOutline {
     // overlap, which overestimates it there; FreeType renders such glyphs supersampled.
     bool overlapping_contours = false;
 };
-
-// Largest em size accepted, in pixels: beyond it FreeType's 26.6 fixed point overflows.
-inline constexpr double kMaxFontSizePx = 16384.0;
-// Largest face index accepted: FreeType keeps the face in the low 16 bits of its index (the
-// high bits select a named instance of a variable font, which bezel does through variations).
-inline constexpr int kMaxFaceIndex = 0xFFFF;
 
 class Font {
 public:

@@ -23,12 +23,9 @@
 #include <vector>
 
 #include "bezel/expected.hpp"
+#include "bezel/limits.hpp"
 
 namespace bezel {
-
-// Largest width or height of an image bezel reads or allocates, in pixels. A PNG claiming more is
-// rejected before any pixel memory is allocated.
-inline constexpr int kMaxImageDim = 1 << 15;
 
 // 8-bit alpha (0 = empty, 255 = fully covered), writable.
 struct MaskView {

@@ -38,6 +38,7 @@
 #include "bezel/bezier.hpp"
 #include "bezel/expected.hpp"
 #include "bezel/geometry.hpp"
+#include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
 namespace bezel {
@@ -58,18 +59,6 @@ inline constexpr double kTangentSine = 1e-8;
 // touch tolerance between them, are one tangential contact (√ε, the resolution limit of a
 // double root).
 inline constexpr double kTangentMergeParam = 1e-7;
-// Deepest subdivision: parameter width 2⁻ᵏ. Pairs that still cannot be separated or isolated at
-// 2⁻²⁰ (≈ 1e-6) are near-tangent and go to the tangent resolver instead of splitting further.
-inline constexpr int kIntersectLeafDepth = 20;
-// Most sub-curve pairs one segment pair may examine. Random cubic pairs need 4 on average and
-// 34 at most (20000 pairs measured); curves that run within the touch tolerance of each other
-// for a long stretch without being an overlap need the most. Exceeding it is an Error, not a
-// hang (the wall is met within tens of milliseconds).
-inline constexpr std::size_t kMaxIntersectWork = std::size_t{1} << 18;
-// Most results intersect_paths / self_intersect_path return before giving up with an Error.
-inline constexpr std::size_t kMaxPathIntersections = std::size_t{1} << 20;
-// Most segment pairs with overlapping bounding boxes one path call may examine.
-inline constexpr std::size_t kMaxPathSegmentPairs = std::size_t{1} << 24;
 
 // ---- Inputs ------------------------------------------------------------------------------------
 

@@ -1,96 +1,119 @@
-// bezel/limits.hpp — every named limit of the library in one place: the walls hostile or runaway
-// input meets instead of the memory limit or a hang (HarfBuzz's HB_*_MAX style).
-//
-// Each constant is DEFINED in its module's header, beside the function it guards, so that the
-// module still reads on its own and existing names keep working; this header includes them all
-// and is the table of record. The static_asserts below pin the table to the definitions: changing
-// a limit means changing its line here too (tests/limits_test.cpp includes this header, and
-// crosses every limit to check the error it gets).
-//
-//  limit                       value           module     why
-//  --------------------------- --------------- ---------- ------------------------------------------
-//  kMaxBitmapDim               16384 px        raster     largest fill target side; 16384² A8 is 256 MiB
-//  kMaxImageDim                32768 px        image      largest image read (PNG header checked
-//                                                         before any pixel is allocated) or allocated
-//  kMaxEdges                   2^22 segments   raster     per fill, checked before work (for paths by
-//                                                         Wang's bound, before flattening); ~200× the
-//                                                         most complex CJK glyph at 512 px
-//  kMaxBandCells               2^18 floats     raster     scratch per band (1 MiB): bounds memory,
-//                                                         not what can be drawn (tall fills band)
-//  kMaxFlattenDepth            16              flatten    deepest halving of one curve
-//  kMaxSegmentsPerCurve        2^16            flatten    segments one curve may become, any method
-//  kMaxFlattenCoordinatePx     2^50 px         flatten    beyond it no 1/8 px step exists in a double;
-//                                                         keeps squares and cross products finite
-//  kMaxSvgPathLength           16 MiB          path       path data bytes parse_svg_path reads
-//  kMaxSvgPathPoints           2^23 points     path       parsed points (arcs expand: 16 MiB of arcs
-//                                                         could otherwise ask for tens of GB)
-//  kMaxCubicsPerArc            512             path       cubics per elliptical arc; error already
-//                                                         below double rounding at 512
-//  kMaxFontSizePx              16384 px        font       FreeType's 26.6 fixed point overflows past it
-//  kMaxFaceIndex               65535           font       FreeType keeps the face in 16 bits
-//  kMaxTextBytes               16 MiB          text       UTF-8 bytes one shape/layout/render call takes
-//  kDefaultGlyphCacheBytes     16 MiB          text       default bound of a GlyphCache's bitmaps (LRU)
-//  kMaxTextCodePoints          1000            CLI        --text of `bezel outline`: one listing each
-//  kMaxIntersectWork           2^18 pairs      intersect  sub-curve pairs per segment pair; random
-//                                                         cubic pairs need ≤ 34
-//  kMaxPathIntersections       2^20            intersect  results per path call
-//  kMaxPathSegmentPairs        2^24            intersect  box-overlapping segment pairs per path call
-//  kIntersectLeafDepth         20              intersect  subdivision depth (2^-20 in parameter)
-//  kMaxSmoothPoints            2^20            smooth     input points of any method (work and output
-//                                                         are linear in it)
-//  kMaxSmoothCoordinate        2^100           smooth     keeps phantom points, spans and products finite
-//  kMaxChaikinIterations       24              smooth     each round doubles the points
-//  kMaxChaikinOutputPoints     2^22            smooth     checked before any work (64 MiB)
-//  kMaxStrokeSegments          2^18            stroke     output segments of one stroke
-//  kMaxDashes                  2^16            stroke     dash intervals one stroke may emit
-//  kMaxSurfacePatches          16384           surface    patches per surface
-//  kMaxBSplineGridSide         256             surface    control points per side of a B-spline grid
-//  kMaxTessellationSteps       512             surface    steps per patch side
-//  kMaxMeshTriangles           2^22            surface    triangles per mesh
-//  kMaxSurfaceImageDim         8192 px         surface    rendered image side
+// bezel/limits.hpp — every named limit of the library, each stated once with its reason: the walls
+// hostile or runaway input meets instead of the memory limit or a hang (HarfBuzz's HB_*_MAX
+// style). Crossing one is an Error naming the input, checked before the work or the allocation it
+// bounds. Module headers include this file and name the limit beside the function it guards;
+// tests/limits_test.cpp crosses each one.
 #pragma once
 
-#include "bezel/flatten.hpp"
-#include "bezel/font.hpp"
-#include "bezel/image.hpp"
-#include "bezel/intersect.hpp"
-#include "bezel/path.hpp"
-#include "bezel/raster.hpp"
-#include "bezel/smooth.hpp"
-#include "bezel/stroke.hpp"
-#include "bezel/surface.hpp"
-#include "bezel/text.hpp"
+#include <cstddef>
 
-namespace bezel::limits_table {
+namespace bezel {
 
-static_assert(kMaxBitmapDim == 16384);
-static_assert(kMaxImageDim == 32768);
-static_assert(kMaxEdges == std::size_t{1} << 22);
-static_assert(kMaxBandCells == std::size_t{1} << 18);
-static_assert(kMaxFlattenDepth == 16);
-static_assert(kMaxSegmentsPerCurve == std::size_t{1} << 16);
-static_assert(kMaxFlattenCoordinatePx == 0x1p50);
-static_assert(kMaxSvgPathLength == std::size_t{16} << 20);
-static_assert(kMaxSvgPathPoints == std::size_t{1} << 23);
-static_assert(kMaxCubicsPerArc == 512);
-static_assert(kMaxFontSizePx == 16384.0);
-static_assert(kMaxFaceIndex == 0xFFFF);
-static_assert(kMaxTextBytes == std::size_t{1} << 24);
-static_assert(kDefaultGlyphCacheBytes == std::size_t{1} << 24);
-static_assert(kMaxIntersectWork == std::size_t{1} << 18);
-static_assert(kMaxPathIntersections == std::size_t{1} << 20);
-static_assert(kMaxPathSegmentPairs == std::size_t{1} << 24);
-static_assert(kIntersectLeafDepth == 20);
-static_assert(kMaxSmoothPoints == std::size_t{1} << 20);
-static_assert(kMaxSmoothCoordinate == 0x1p100);
-static_assert(kMaxChaikinIterations == 24);
-static_assert(kMaxChaikinOutputPoints == std::size_t{1} << 22);
-static_assert(kMaxStrokeSegments == std::size_t{1} << 18);
-static_assert(kMaxDashes == std::size_t{1} << 16);
-static_assert(kMaxSurfacePatches == 16384);
-static_assert(kMaxBSplineGridSide == 256);
-static_assert(kMaxTessellationSteps == 512);
-static_assert(kMaxMeshTriangles == std::size_t{1} << 22);
-static_assert(kMaxSurfaceImageDim == 8192);
+// --- image ------------------------------------------------------------------------------------
+// Largest width or height of an image bezel reads or allocates, in pixels. A PNG claiming more is
+// rejected before any pixel memory is allocated.
+inline constexpr int kMaxImageDim = 1 << 15;
 
-}  // namespace bezel::limits_table
+// --- raster -----------------------------------------------------------------------------------
+// Largest fill target width or height, in pixels: a 16384² A8 target is already 256 MiB.
+inline constexpr int kMaxBitmapDim = 16384;
+// Most line segments one fill may have (polyline points, after flattening for paths), checked
+// before any work (for paths by Wang's bound, before flattening). 4M segments is ~200× the most
+// complex glyph of a CJK font at 512 px.
+inline constexpr std::size_t kMaxEdges = std::size_t{1} << 22;
+// The scratch accumulation buffer never exceeds this many floats (1 MiB, plus 32 bytes to align
+// it); taller fills are processed in horizontal bands of whole 8-row groups. It bounds memory,
+// not what can be drawn.
+inline constexpr std::size_t kMaxBandCells = std::size_t{1} << 18;
+
+// --- flatten ----------------------------------------------------------------------------------
+// Deepest halving of one curve by the recursive methods: at most 2^16 pieces per curve.
+inline constexpr int kMaxFlattenDepth = 16;
+// Most line segments one curve may become, for every method. A curve that needs more (a curve of
+// extent E pixels needs about √(E / tol) segments, so E/tol > ~10⁹) gets exactly this many, evenly
+// spaced, and its bound is not met: flatten() accepts that silently, flatten_checked() reports it.
+inline constexpr std::size_t kMaxSegmentsPerCurve = std::size_t{1} << kMaxFlattenDepth;
+// Largest coordinate magnitude accepted after the transform: 2^50 px. Beyond it a double cannot
+// hold 1/8-pixel steps, so no tolerance is meaningful, and the bound keeps every square and cross
+// product in the methods far from overflow.
+inline constexpr double kMaxFlattenCoordinatePx = 1125899906842624.0;  // 2^50
+
+// --- path (SVG path data) ---------------------------------------------------------------------
+// Longest path data parse_svg_path accepts, in bytes of input.
+inline constexpr std::size_t kMaxSvgPathLength = std::size_t{16} << 20;  // 16 MiB
+// Most points a parsed path may hold. Arcs expand into up to kMaxCubicsPerArc cubics each, so
+// without this wall 16 MiB of arcs could ask for tens of gigabytes. Data without arcs never
+// reaches it: a point costs at least 4 bytes (".1.1"), so 16 MiB holds at most 4 Mi points.
+inline constexpr std::size_t kMaxSvgPathPoints = std::size_t{1} << 23;  // 8 Mi points, 128 MiB
+// Most cubics one elliptical arc becomes. 512 cubics over a full turn already put the
+// approximation error (≈ 6e-17 × radius) below double rounding, so the cap only binds when the
+// requested tolerance is smaller than rounding can honour anyway.
+inline constexpr int kMaxCubicsPerArc = 512;
+
+// --- font -------------------------------------------------------------------------------------
+// Largest em size accepted, in pixels: beyond it FreeType's 26.6 fixed point overflows.
+inline constexpr double kMaxFontSizePx = 16384.0;
+// Largest face index accepted: FreeType keeps the face in the low 16 bits of its index (the
+// high bits select a named instance of a variable font, which bezel does through variations).
+inline constexpr int kMaxFaceIndex = 0xFFFF;
+
+// --- text -------------------------------------------------------------------------------------
+// Longest text one shape/layout/render call accepts, in bytes of UTF-8 (16 MiB). Past it, Error.
+inline constexpr std::size_t kMaxTextBytes = std::size_t{1} << 24;
+// Default bound of a GlyphCache's pixel memory (bytes of bitmaps it keeps; least recently used
+// entries are evicted past it): 16 MiB, a few thousand glyphs at text sizes.
+inline constexpr std::size_t kDefaultGlyphCacheBytes = std::size_t{1} << 24;
+
+// --- intersect --------------------------------------------------------------------------------
+// Deepest subdivision: parameter width 2⁻ᵏ. Pairs that still cannot be separated or isolated at
+// 2⁻²⁰ (≈ 1e-6) are near-tangent and go to the tangent resolver instead of splitting further.
+inline constexpr int kIntersectLeafDepth = 20;
+// Most sub-curve pairs one segment pair may examine. Random cubic pairs need 4 on average and
+// 34 at most (20000 pairs measured); curves that run within the touch tolerance of each other
+// for a long stretch without being an overlap need the most. Exceeding it is an Error, not a
+// hang (the wall is met within tens of milliseconds).
+inline constexpr std::size_t kMaxIntersectWork = std::size_t{1} << 18;
+// Most results intersect_paths / self_intersect_path return before giving up with an Error.
+inline constexpr std::size_t kMaxPathIntersections = std::size_t{1} << 20;
+// Most segment pairs with overlapping bounding boxes one path call may examine.
+inline constexpr std::size_t kMaxPathSegmentPairs = std::size_t{1} << 24;
+
+// --- smooth -----------------------------------------------------------------------------------
+// Most input points (and tangents) any method accepts. Work and output are linear in the count,
+// so this bounds both (a 2^20-point spline is 2^20 cubics, ~100 MB of Path).
+inline constexpr std::size_t kMaxSmoothPoints = std::size_t{1} << 20;
+// Largest coordinate magnitude accepted (2^100 ≈ 1.3e30, far beyond any drawing). It keeps every
+// intermediate — differences, phantom points 2P₀ − P₁, squared distances, products of spans —
+// finite; a result that would still overflow (e.g. chord-length spans in a ratio of 1e300) is an
+// error, never a non-finite path.
+inline constexpr double kMaxSmoothCoordinate = 0x1p100;
+// Most Chaikin iterations. Each iteration doubles the point count, so from 21 iterations on even
+// a triangle exceeds kMaxChaikinOutputPoints; after 8 the polygon's distance to the limit curve
+// is already 4⁻⁸ ≈ 1.5e-5 of what it was — use chaikin_limit() for the exact curve.
+inline constexpr int kMaxChaikinIterations = 24;
+// Most points chaikin() may produce, checked before any work: after k rounds n points become
+// n·2^k (closed, or open with kept ends) or (n−2)·2^k + 2 (open, ends cut). 4 Mi points = 64 MiB.
+inline constexpr std::size_t kMaxChaikinOutputPoints = std::size_t{1} << 22;
+
+// --- stroke -----------------------------------------------------------------------------------
+// Most output segments one stroke may produce (256 Ki, about 12 MB of Path); past it, an Error
+// rather than an unbounded allocation. A dashed stroke whose dashes alone would pass it (each
+// dash is at least its two sides and two caps) fails before any dash is made.
+inline constexpr std::size_t kMaxStrokeSegments = std::size_t{1} << 18;
+// Most dash intervals one stroke or dash() may emit (64 Ki): a tiny dash over a long path is an
+// Error. Stroking costs several µs per output segment, so both bounds keep one call on the worst
+// inputs the fuzzer found within about a second (Release).
+inline constexpr std::size_t kMaxDashes = std::size_t{1} << 16;
+
+// --- surface ----------------------------------------------------------------------------------
+// Most patches one surface may have, and the largest B-spline control grid side: bounds on work
+// and memory met before anything is allocated (the Utah teapot has 32 patches).
+inline constexpr std::size_t kMaxSurfacePatches = 16384;
+inline constexpr int kMaxBSplineGridSide = 256;
+// Most grid steps along one patch direction, and most triangles one mesh may hold.
+inline constexpr int kMaxTessellationSteps = 512;
+inline constexpr std::size_t kMaxMeshTriangles = std::size_t{1} << 22;
+// Largest picture side, in pixels.
+inline constexpr int kMaxSurfaceImageDim = 8192;
+
+}  // namespace bezel

@@ -29,6 +29,7 @@
 #include "bezel/bezier.hpp"
 #include "bezel/expected.hpp"
 #include "bezel/geometry.hpp"
+#include "bezel/limits.hpp"
 
 namespace bezel {
 
@@ -181,17 +182,6 @@ private:
 
 // ---------------------------------------------------------------------------------------------
 // SVG path data (SVG 1.1 §8.3 / SVG 2 §9.3 grammar), in and out.
-
-// Longest path data parse_svg_path accepts, in bytes of input.
-inline constexpr std::size_t kMaxSvgPathLength = std::size_t{16} << 20;  // 16 MiB
-// Most points a parsed path may hold. Arcs expand into up to kMaxCubicsPerArc cubics each, so
-// without this wall 16 MiB of arcs could ask for tens of gigabytes. Data without arcs never
-// reaches it: a point costs at least 4 bytes (".1.1"), so 16 MiB holds at most 4 Mi points.
-inline constexpr std::size_t kMaxSvgPathPoints = std::size_t{1} << 23;  // 8 Mi points, 128 MiB
-// Most cubics one elliptical arc becomes. 512 cubics over a full turn already put the
-// approximation error (≈ 6e-17 × radius) below double rounding, so the cap only binds when the
-// requested tolerance is smaller than rounding can honour anyway.
-inline constexpr int kMaxCubicsPerArc = 512;
 
 struct SvgParseOptions {
     // Bound on the distance between each true elliptical arc and the cubics that replace it, in

@@ -30,6 +30,7 @@
 #include "bezel/flatten.hpp"
 #include "bezel/geometry.hpp"
 #include "bezel/image.hpp"
+#include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
 namespace bezel {
@@ -41,17 +42,6 @@ namespace bezel {
 // Both use plain area accumulation: where two contours OVERLAP inside one pixel with the same
 // orientation, the partial pixel is over-counted (clamped at 1) — FreeType's default behaviour.
 enum class FillRule : std::uint8_t { NonZero, EvenOdd };
-
-// Largest target width or height, in pixels. A larger target is an Error.
-inline constexpr int kMaxBitmapDim = 16384;
-// Most line segments one fill may have (polyline points, after flattening for paths). More is an
-// Error, checked before any work: a hostile or runaway input meets this wall instead of the
-// memory limit. 4M segments is ~200× the most complex glyph of a CJK font at 512 px.
-inline constexpr std::size_t kMaxEdges = std::size_t{1} << 22;
-// The scratch accumulation buffer never exceeds this many floats (1 MiB, plus 32 bytes to align
-// it); taller fills are processed in horizontal bands of whole 8-row groups. Not a limit on
-// input: it bounds memory, not what can be drawn.
-inline constexpr std::size_t kMaxBandCells = std::size_t{1} << 18;
 
 // Flattening tolerance fill_path uses unless told otherwise: 0.01 px. Why: exact-area coverage
 // leaves flattening as the only geometric error (chords cut inside convex curves, always the same

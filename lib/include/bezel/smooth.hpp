@@ -30,26 +30,10 @@
 
 #include "bezel/expected.hpp"
 #include "bezel/geometry.hpp"
+#include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
 namespace bezel {
-
-// ---- Limits -------------------------------------------------------------------------------------
-// Most input points (and tangents) any method accepts. Work and output are linear in the count,
-// so this bounds both (a 2^20-point spline is 2^20 cubics, ~100 MB of Path).
-inline constexpr std::size_t kMaxSmoothPoints = std::size_t{1} << 20;
-// Largest coordinate magnitude accepted (2^100 ≈ 1.3e30, far beyond any drawing). It keeps every
-// intermediate — differences, phantom points 2P₀ − P₁, squared distances, products of spans —
-// finite; a result that would still overflow (e.g. chord-length spans in a ratio of 1e300) is an
-// error, never a non-finite path.
-inline constexpr double kMaxSmoothCoordinate = 0x1p100;
-// Most Chaikin iterations. Each iteration doubles the point count, so from 21 iterations on even
-// a triangle exceeds kMaxChaikinOutputPoints; after 8 the polygon's distance to the limit curve
-// is already 4⁻⁸ ≈ 1.5e-5 of what it was — use chaikin_limit() for the exact curve.
-inline constexpr int kMaxChaikinIterations = 24;
-// Most points chaikin() may produce, checked before any work: after k rounds n points become
-// n·2^k (closed, or open with kept ends) or (n−2)·2^k + 2 (open, ends cut). 4 Mi points = 64 MiB.
-inline constexpr std::size_t kMaxChaikinOutputPoints = std::size_t{1} << 22;
 
 // ---- Chaikin corner cutting ------------------------------------------------------------------
 //

@@ -16,22 +16,13 @@
 
 #include "bezel/expected.hpp"
 #include "bezel/geometry.hpp"
+#include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
 namespace bezel {
 
 enum class LineJoin : std::uint8_t { Miter, Round, Bevel };
 enum class LineCap : std::uint8_t { Butt, Round, Square };
-
-// Most output segments one stroke may produce (256 Ki, about 12 MB of Path); past it, an Error
-// rather than an unbounded allocation. A dashed stroke whose dashes alone would pass it (each
-// dash is at least its two sides and two caps) fails before any dash is made.
-inline constexpr std::size_t kMaxStrokeSegments = std::size_t{1} << 18;
-// Most dash intervals one stroke or dash() may emit (64 Ki): a tiny dash over a long path is
-// an Error. Both bounds keep one call within about a second (Release) on the worst inputs the
-// fuzzer found: stroking costs ~8 µs per output segment here (2.9 s for 353 000 segments of
-// 200 000 dashes, Release, 2-core VM), dashing ~3 µs a dash.
-inline constexpr std::size_t kMaxDashes = std::size_t{1} << 16;
 
 struct StrokeStyle {
     double width = 1;                  // full width, > 0, in path units

@@ -37,6 +37,7 @@
 #include "bezel/bezier.hpp"
 #include "bezel/expected.hpp"
 #include "bezel/image.hpp"
+#include "bezel/limits.hpp"
 
 namespace bezel {
 
@@ -119,11 +120,6 @@ Patch subpatch(const Patch& patch, double s0, double s1, double t0, double t1);
 
 // --- Patch meshes ------------------------------------------------------------------------------
 
-// Most patches one surface may have, and the largest B-spline control grid side: bounds on work
-// and memory met before anything is allocated (the Utah teapot has 32 patches).
-inline constexpr std::size_t kMaxSurfacePatches = 16384;
-inline constexpr int kMaxBSplineGridSide = 256;
-
 // The uniform bicubic B-spline surface of a rows × cols grid of de Boor points (row-major,
 // points[r·cols + c]; r along s, c along t): (rows − 3)·(cols − 3) patches, C2 across every
 // shared edge. Errors: rows or cols < 4 or > kMaxBSplineGridSide, a point count ≠ rows·cols,
@@ -135,10 +131,6 @@ Expected<std::vector<Patch>> bspline_grid(const std::vector<Vec3>& points, int r
 Status validate_patches(const std::vector<Patch>& patches, const std::string& what);
 
 // --- Tessellation --------------------------------------------------------------------------------
-
-// Most grid steps along one patch direction, and most triangles one mesh may hold.
-inline constexpr int kMaxTessellationSteps = 512;
-inline constexpr std::size_t kMaxMeshTriangles = std::size_t{1} << 22;
 
 struct TessellateOptions {
     // > 0: exactly steps × steps grid cells per patch. 0: the count from `tolerance`.
@@ -202,9 +194,6 @@ struct Camera {
 // from `distance` away.
 Camera orbit_camera(Vec3 target, double azimuth_deg, double elevation_deg, double distance,
                     Projection projection);
-
-// Largest picture side, in pixels.
-inline constexpr int kMaxSurfaceImageDim = 8192;
 
 // World → picture. View space: x right, y up, z the distance along the view direction. Pixel
 // x = cx + k·X, y = cy − k·Y with (X, Y) = (x, y) (orthographic) or (x/z, y/z) (perspective).

@@ -6,7 +6,7 @@
 
 #include <hb.h>
 
-#include "bezel/text.hpp"
+#include "bezel/shape.hpp"
 
 namespace bezel {
 

@@ -4,7 +4,7 @@
 #include <hb-ot.h>
 #include <hb.h>
 
-#include "bezel/text.hpp"
+#include "bezel/font_info.hpp"
 #include "text/shape_tags.hpp"
 
 namespace bezel {

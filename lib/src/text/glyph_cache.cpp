@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "bezel/text.hpp"
+#include "bezel/glyph.hpp"
 
 namespace bezel {
 

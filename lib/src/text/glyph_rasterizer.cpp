@@ -11,7 +11,7 @@
 #include <cmath>
 #include <string>
 
-#include "bezel/text.hpp"
+#include "bezel/glyph.hpp"
 
 namespace bezel {
 
@@ -32,7 +32,7 @@ Status check_options(GlyphId gid, const GlyphRenderOptions& o) {
 // is checked against kMaxBitmapDim in double before any conversion to int.
 Expected<GlyphBox> box_of(GlyphId gid, const GlyphOutline& outline, const GlyphRenderOptions& o) {
     GlyphBox box;
-    box.advance = outline.metrics.advance_px;
+    box.advance_px = outline.metrics.advance_px;
     Rect b = outline.path.bounds();
     if (b.is_empty()) return box;
     double x0 = std::floor(b.x0 + o.subpixel_x), x1 = std::ceil(b.x1 + o.subpixel_x);

@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "bezel/text.hpp"
+#include "bezel/layout.hpp"
 #include "text/layout_breaks.hpp"
 #include "text/script_runs.hpp"
 #include "text/shape_tags.hpp"
@@ -126,7 +126,7 @@ Expected<double> ParagraphLayout::placed_width(const LineSpan& line) {
         if (a >= b) continue;
         if (cut_in_word(line, line.end, a, b, run)) {
             if (auto ok = shape_range(base_ + a, base_ + b, run, reshaped_); !ok) return ok.error();
-            width += reshaped_.advance;
+            width += reshaped_.advance_px;
         } else {
             width += prefix_[b] - prefix_[a];
         }
@@ -208,7 +208,7 @@ Status ParagraphLayout::run(std::size_t begin, std::size_t end, int level, doubl
                 [](const CodePoint& c, std::uint32_t off) { return c.offset < off; });
             const auto k = static_cast<std::size_t>(it - cps_.begin()) - begin;
             if (k >= m) continue;
-            adv[k + 1] += g.x_advance;
+            adv[k + 1] += g.x_advance_px;
             boundary_[k] = 1;
         }
     }
@@ -254,12 +254,12 @@ Status ParagraphLayout::place_line(const LineSpan& line, TextLayout& out) {
         const Piece& piece = pieces_[p];
         for (std::size_t i = piece.first; i < piece.first + piece.count; ++i) {
             const ShapedGlyph& g = pool_[i];
-            out.glyphs.push_back({g.gid, pen + g.x_offset, g.y_offset, g.cluster});
-            pen += g.x_advance;
+            out.glyphs.push_back({g.gid, pen + g.x_offset_px, g.y_offset_px, g.cluster});
+            pen += g.x_advance_px;
         }
     }
     laid.glyph_count = out.glyphs.size() - laid.first_glyph;
-    laid.width = pen;
+    laid.width_px = pen;
     out.lines.push_back(laid);
     return ok_status();
 }
@@ -317,30 +317,30 @@ Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
     const double line_advance =
         (metrics.ascender - metrics.descender + metrics.line_gap) * scale * factor;
     double widest = 0;
-    for (const LaidOutLine& l : out.lines) widest = std::max(widest, l.width);
+    for (const LaidOutLine& l : out.lines) widest = std::max(widest, l.width_px);
     const double avail = layout.width_px > 0 ? layout.width_px : widest;
     const double margin = layout.margin_px;
     for (std::size_t i = 0; i < out.lines.size(); ++i) {
         LaidOutLine& line = out.lines[i];
-        const double slack = std::max(0.0, avail - line.width);
+        const double slack = std::max(0.0, avail - line.width_px);
         double x0 = 0;
         switch (layout.align) {
             case Align::Start: x0 = rtl_line[i] ? slack : 0; break;
             case Align::Center: x0 = slack / 2; break;
             case Align::End: x0 = rtl_line[i] ? 0 : slack; break;
         }
-        line.baseline_y = margin + ascender + static_cast<double>(i) * line_advance;
+        line.baseline_y_px = margin + ascender + static_cast<double>(i) * line_advance;
         for (std::size_t g = line.first_glyph; g < line.first_glyph + line.glyph_count; ++g) {
-            out.glyphs[g].x += margin + x0;
-            out.glyphs[g].y += line.baseline_y;
+            out.glyphs[g].x_px += margin + x0;
+            out.glyphs[g].y_px += line.baseline_y_px;
         }
     }
-    out.width = avail + 2 * margin;
-    out.height = 2 * margin + ascender - descender +
+    out.width_px = avail + 2 * margin;
+    out.height_px = 2 * margin + ascender - descender +
                  static_cast<double>(out.lines.size() - 1) * line_advance;
     // Each option is finite, but their products need not be: a line_height of 1e300 puts the
     // second line at infinity (a fuzz_text finding). The block's size bounds every position.
-    if (!std::isfinite(out.width) || !std::isfinite(out.height))
+    if (!std::isfinite(out.width_px) || !std::isfinite(out.height_px))
         return Error{"layout: the text block would be infinitely large (line_height " +
                      std::to_string(layout.line_height) + ", margin_px " +
                      std::to_string(layout.margin_px) + ", width_px " +

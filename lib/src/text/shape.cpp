@@ -15,7 +15,7 @@
 #include <hb-ot.h>
 #include <hb.h>
 
-#include "bezel/text.hpp"
+#include "bezel/shape.hpp"
 #include "text/shape_tags.hpp"
 #include "text/utf8_decode.hpp"
 
@@ -231,11 +231,11 @@ Expected<ShapedRun> Shaper::shape(std::string_view utf8, const ShapeOptions& opt
         g.gid = info[i].codepoint;
         g.cluster = info[i].cluster;
         // HarfBuzz's y axis points up; bezel's down.
-        g.x_advance = pos[i].x_advance * px_per_unit;
-        g.y_advance = -pos[i].y_advance * px_per_unit;
-        g.x_offset = pos[i].x_offset * px_per_unit;
-        g.y_offset = -pos[i].y_offset * px_per_unit;
-        run.advance += HB_DIRECTION_IS_HORIZONTAL(dir) ? g.x_advance : g.y_advance;
+        g.x_advance_px = pos[i].x_advance * px_per_unit;
+        g.y_advance_px = -pos[i].y_advance * px_per_unit;
+        g.x_offset_px = pos[i].x_offset * px_per_unit;
+        g.y_offset_px = -pos[i].y_offset * px_per_unit;
+        run.advance_px += HB_DIRECTION_IS_HORIZONTAL(dir) ? g.x_advance_px : g.y_advance_px;
     }
     return run;
 }

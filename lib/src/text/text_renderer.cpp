@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "bezel/text.hpp"
+#include "bezel/text_renderer.hpp"
 
 namespace bezel {
 
@@ -97,7 +97,7 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     auto layout = layout_text(r.shaper, r.font.metrics(), utf8, options.shape, options.layout);
     if (!layout) return layout.error();
 
-    const double w = std::ceil(layout->width), h = std::ceil(layout->height);
+    const double w = std::ceil(layout->width_px), h = std::ceil(layout->height_px);
     if (!(w <= kMaxImageDim && h <= kMaxImageDim && w * h <= kMaxPagePixels))
         return Error{"text page of " + std::to_string(w) + "x" + std::to_string(h) +
                      " px is too large (at most " + std::to_string(kMaxImageDim) + " px a side, " +
@@ -113,10 +113,10 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     // huge margin is refused by the size check above; this guards the int conversions) or an
     // empty glyph.
     auto look_up = [&](const PlacedGlyph& g, int& x, int& y) -> Expected<const CachedGlyph*> {
-        const double quarters = std::floor(g.x * kSubpixelBins + 0.5);
+        const double quarters = std::floor(g.x_px * kSubpixelBins + 0.5);
         const double column = std::floor(quarters / kSubpixelBins);
         glyph.subpixel_x = (quarters - column * kSubpixelBins) / kSubpixelBins;
-        const double row = std::floor(g.y + 0.5);
+        const double row = std::floor(g.y_px + 0.5);
         if (std::fabs(column) > kMaxImageDim * 2.0 || std::fabs(row) > kMaxImageDim * 2.0)
             return nullptr;
         auto cached = r.cache.get(r.rasterizer, r.font_id, g.gid, glyph);

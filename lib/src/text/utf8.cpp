@@ -2,7 +2,7 @@
 // share.
 #include <string>
 
-#include "bezel/text.hpp"
+#include "bezel/shape.hpp"
 #include "text/utf8_decode.hpp"
 
 namespace bezel {

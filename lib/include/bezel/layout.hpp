@@ -1,0 +1,75 @@
+// bezel/layout.hpp — a paragraph shaped and laid out into lines: explicit breaks, wrapping at a
+// width, bidi runs ordered per line, alignment and margins.
+//
+// Units: pixels, y DOWN; a glyph's pen position is on its baseline.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "bezel/expected.hpp"
+#include "bezel/font.hpp"
+#include "bezel/shape.hpp"
+
+namespace bezel {
+
+enum class Align : std::uint8_t { Start, Center, End };
+
+struct LayoutOptions {
+    double width_px = 0;       // wrap lines at break opportunities to fit this width; 0 = no wrap
+    double line_height = 0;    // baseline-to-baseline distance as a multiple of the font's own
+                               // (ascender − descender + line gap); 0 means 1.0
+    double margin_px = 0;      // around the text block on all four sides
+    Align align = Align::Start;  // Start is left for LTR paragraphs and right for RTL ones
+};
+
+// A glyph placed on the page: pen position (baseline) in page pixels, y down.
+struct PlacedGlyph {
+    GlyphId gid = 0;
+    double x_px = 0, y_px = 0;    // pen position on the baseline
+    std::uint32_t cluster = 0;   // byte offset in the whole input text
+};
+
+struct LaidOutLine {
+    std::size_t first_glyph = 0, glyph_count = 0;   // into TextLayout::glyphs
+    std::uint32_t text_begin = 0, text_end = 0;     // byte range of the text on this line
+    double baseline_y_px = 0;
+    double width_px = 0;                            // advance width of the line's glyphs
+};
+
+struct TextLayout {
+    std::vector<PlacedGlyph> glyphs;
+    std::vector<LaidOutLine> lines;
+    double width_px = 0, height_px = 0;   // page size including margins (width_px + margins if wrapping)
+};
+
+// Shapes and lays out a paragraph: explicit newlines (\n, \r\n, U+2028) start lines; with
+// width_px > 0 lines wrap at break opportunities (after spaces, after hyphens, between ideographs;
+// a word wider than the line is broken between clusters); each line is shaped per run of one
+// script and direction, runs ordered right to left within an RTL paragraph. `metrics` gives line
+// height. Errors as Shaper::shape, plus a negative or non-finite width/margin/line height,
+// metrics with units_per_em ≤ 0, and a vertical direction (layout is horizontal only).
+//
+// Lines: N line separators make N + 1 lines (an empty text is one empty line); the first
+// baseline is at margin + ascender; spaces at the end of a wrapped line hang (not placed, not
+// counted in its width, but inside its text range). Where a line cuts a word between clusters,
+// both pieces are reshaped (Arabic letters at the cut take their final/initial forms).
+//
+// Bidi is a simplified Unicode Bidirectional Algorithm (UAX #9), without fribidi. Implemented:
+// the paragraph direction from its first strong character (P2/P3) unless shape.direction gives
+// it; strong classes from the Unicode script (letters of Hebrew, Arabic, Syriac, Thaana, N'Ko, …
+// are R, other letters L); marks take the class before them (W1); digits are left-to-right
+// numbers, one level up unless they follow L text (W2, W7, I1, I2); neutrals between equal
+// directions take it, others the paragraph's (N1, N2); runs reordered by level per line (L2).
+// Left out: explicit embeddings, overrides and isolates (LRE…PDI are neutrals), the number
+// separator/terminator rules W3–W6 ("1,000" or "5%" beside Arabic may split), paired brackets
+// (N0), and L1 (trailing whitespace keeps its level; wrapped lines drop it instead). Line
+// breaking is a subset of UAX #14: no dictionary breaking (Thai, Lao, Khmer), no quotation or
+// numeric prefix/postfix classes.
+Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
+                                 std::string_view utf8, const ShapeOptions& shape,
+                                 const LayoutOptions& layout);
+
+}  // namespace bezel

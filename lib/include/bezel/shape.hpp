@@ -1,0 +1,91 @@
+// bezel/shape.hpp — HarfBuzz shaping of one run of text in one font, and the UTF-8 it reads.
+//
+// Units: pixels at ShapeOptions::size_px, y DOWN (HarfBuzz's y-up offsets negated). Clusters are
+// byte offsets into the UTF-8 input.
+//
+// Threading: a Shaper holds a HarfBuzz font and a reused buffer; one Shaper must not be used from
+// two threads at once. Separate Shapers, even of the same file, may run on separate threads.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "bezel/expected.hpp"
+#include "bezel/font.hpp"
+#include "bezel/limits.hpp"
+
+namespace bezel {
+
+// Decodes UTF-8 strictly (no overlong forms, no surrogates, nothing above U+10FFFF). The error
+// names the byte offset of the first bad sequence: "text byte 7: invalid UTF-8".
+Expected<std::u32string> decode_utf8(std::string_view text);
+void append_utf8(std::string& out, char32_t code_point);
+
+enum class Direction : std::uint8_t { Auto, LeftToRight, RightToLeft, TopToBottom, BottomToTop };
+
+// An OpenType feature setting in hb-view's syntax: "kern", "-liga", "+smcp", "aalt=2",
+// "liga[3:5]=0" (a range of CLUSTER indices, end exclusive).
+struct FeatureSetting {
+    std::string tag;            // four characters
+    std::uint32_t value = 1;
+    std::size_t start = 0;      // cluster range [start, end)
+    std::size_t end = SIZE_MAX;
+};
+// Parses a comma- (or space-) separated list of features in hb-view's syntax. The error names
+// the item that does not parse.
+Expected<std::vector<FeatureSetting>> parse_features(std::string_view spec);
+
+struct ShapeOptions {
+    double size_px = 16;                       // em size, (0, kMaxFontSizePx]
+    std::vector<FeatureSetting> features;
+    std::vector<VariationSetting> variations;  // design coordinates, as Font::set_variations
+    Direction direction = Direction::Auto;     // Auto: from the text (first strong character)
+    std::string script;                        // ISO 15924 ("Arab", "Deva"); "" = from the text
+    std::string language;                      // BCP 47 ("ar", "hi"); "" = HarfBuzz's default
+};
+
+// One shaped glyph. Advances and offsets in pixels, y DOWN (HarfBuzz's y-up offsets negated).
+struct ShapedGlyph {
+    GlyphId gid = 0;
+    std::uint32_t cluster = 0;   // byte offset in the UTF-8 input of the cluster's first character
+    double x_advance_px = 0, y_advance_px = 0;
+    double x_offset_px = 0, y_offset_px = 0;
+};
+
+// A shaped run, glyphs in VISUAL order (left to right for horizontal text, as HarfBuzz returns
+// them for RTL too).
+struct ShapedRun {
+    std::vector<ShapedGlyph> glyphs;
+    Direction direction = Direction::LeftToRight;  // resolved
+    std::string script;                            // resolved ISO 15924 tag
+    double advance_px = 0;                            // sum of advances along the direction
+};
+
+// HarfBuzz shaping of one font file (its own hb_face from the file; glyph ids are the same as
+// Font's for the same file and face index).
+class Shaper {
+public:
+    // Errors name the file: missing, not a font, face index out of range.
+    static Expected<Shaper> open(const std::string& file, int face_index = 0);
+    Shaper(Shaper&&) noexcept;
+    Shaper& operator=(Shaper&&) noexcept;
+    Shaper(const Shaper&) = delete;
+    Shaper& operator=(const Shaper&) = delete;
+    ~Shaper();
+
+    // Shapes `utf8` as one run (no line breaking, no bidi reordering across runs). Errors:
+    // invalid UTF-8 (offset named), text longer than kMaxTextBytes, size out of range, an
+    // unknown variation axis, a script or language tag that does not parse.
+    Expected<ShapedRun> shape(std::string_view utf8, const ShapeOptions& options);
+
+private:
+    struct Impl;
+    explicit Shaper(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace bezel
