@@ -21,6 +21,7 @@
 #include "bezel/font.hpp"
 #include "bezel/image.hpp"
 #include "support/cli_run.hpp"
+#include "support/golden.hpp"
 
 namespace {
 
@@ -279,7 +280,7 @@ TEST_F(GlyphCli, AsciiArtHasAHeaderAndOneCharacterPerPixel) {
 TEST_F(GlyphCli, PicturesMatchGoldens) {
     // Tolerance: 1/255 per pixel (rounding differences between sweep kernels).
     const std::string dir = std::string(BEZEL_GOLDEN_DIR) + "/glyph/";
-    const bool update = std::getenv("BEZEL_UPDATE_GOLDEN") != nullptr;
+    const bool update = bezel::test::update_golden();
     struct Case {
         std::string name;
         std::vector<std::string> args;
@@ -293,10 +294,13 @@ TEST_F(GlyphCli, PicturesMatchGoldens) {
         const std::string out = (scratch().path() / c.name).string();
         std::vector<std::string> args = c.args;
         args.push_back("-o");
-        args.push_back(update ? dir + c.name : out);
+        args.push_back(out);
         CliRun r = run(args);
         ASSERT_EQ(r.exit_code, 0) << r.err;
-        if (update) continue;
+        if (update) {
+            bezel::test::replace_golden(out, dir + c.name);
+            continue;
+        }
         auto got = bezel::read_png_gray(out);
         auto want = bezel::read_png_gray(dir + c.name);
         ASSERT_TRUE(got.ok()) << got.error().message;

@@ -16,6 +16,7 @@
 #include "bezel/font.hpp"
 #include "bezel/image.hpp"
 #include "bezel/raster.hpp"
+#include "support/golden.hpp"
 
 namespace bezel {
 namespace {
@@ -103,7 +104,7 @@ TEST(RasterGlyphs, MeanErrorAgainstSupersampledReferenceIsUnderHalfALevel) {
 // the outline and the flattening come from other modules whose last-bit rounding may change.
 void check_golden(const Mask& m, const std::string& name) {
     const std::string file = std::string(BEZEL_GOLDEN_DIR) + "/raster/" + name + ".png";
-    if (const char* u = std::getenv("BEZEL_UPDATE_GOLDEN"); u && std::string(u) == "1") {
+    if (test::update_golden()) {
         ASSERT_TRUE(write_png_gray(file, m.view()).ok());
         return;
     }

@@ -16,6 +16,7 @@
 #include "bezel/image.hpp"
 #include "bezel/raster.hpp"
 #include "bezel/stroke.hpp"
+#include "support/golden.hpp"
 
 namespace bezel {
 namespace {
@@ -213,7 +214,7 @@ TEST(StrokeRender, GoldenStrokedGlyphDejaVuGAt96Px) {
         for (int x = 0; x < w; ++x) m.at(x, y) = static_cast<std::uint8_t>(255 - m.at(x, y));
 
     const std::string file = std::string(BEZEL_GOLDEN_DIR) + "/stroke/dejavu_g_96_w3_round.png";
-    if (const char* u = std::getenv("BEZEL_UPDATE_GOLDEN"); u && std::string(u) == "1") {
+    if (test::update_golden()) {
         ASSERT_TRUE(write_png_gray(file, m.view()).ok());
         return;
     }

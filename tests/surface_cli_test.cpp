@@ -12,6 +12,7 @@
 
 #include "bezel/image.hpp"
 #include "support/cli_run.hpp"
+#include "support/golden.hpp"
 
 namespace {
 
@@ -47,11 +48,11 @@ protected:
 // compilers move an anti-aliased edge or a depth-sort tie by a fraction of a pixel, no more).
 void expect_golden(const std::string& name, std::vector<std::string> args) {
     const std::string golden = std::string(BEZEL_GOLDEN_DIR) + "/surface/" + name + ".png";
-    const bool update = std::getenv("BEZEL_UPDATE_GOLDEN") != nullptr;
-    const std::string out = update ? golden : (scratch().path() / (name + ".png")).string();
+    const std::string out = (scratch().path() / (name + ".png")).string();
     args.insert(args.end(), {"--size", "128x128", "-o", out});
     CliRun r = run(args);
     ASSERT_EQ(r.exit_code, 0) << r.err;
+    if (bezel::test::update_golden()) return bezel::test::replace_golden(out, golden);
     auto got = bezel::read_png_gray(out);
     ASSERT_TRUE(got.ok()) << got.error().message;
     auto want = bezel::read_png_gray(golden);

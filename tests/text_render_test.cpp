@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "bezel/text.hpp"
+#include "support/golden.hpp"
 
 namespace bezel {
 namespace {
@@ -38,7 +39,7 @@ Mask luma_of(const Image& image) {
 void expect_matches_golden(const Image& image, const std::string& name) {
     const std::string file = std::string(BEZEL_GOLDEN_DIR) + "/text/" + name + ".png";
     Mask got = luma_of(image);
-    if (std::getenv("BEZEL_UPDATE_GOLDEN")) {
+    if (bezel::test::update_golden()) {
         ASSERT_TRUE(write_png_gray(file, got.view()));
         return;
     }
