@@ -3,8 +3,8 @@
 // NaN and enormous font sizes, malformed path data, unknown options, unwritable output paths,
 // invalid UTF-8 text. Each must give ONE error line (`bezel: …` naming the input; a usage error
 // may add the "Run '… --help'" hint line), exit code 1 or 2, and leave no output or temporary
-// file behind. Setting BEZEL_CATALOGUE=FILE writes the README table (input, command, exit code,
-// message) from the real runs.
+// file behind. Setting BEZEL_CATALOGUE=FILE writes the table of docs/cli.md (input, command,
+// exit code, message) from the real runs.
 #include <gtest/gtest.h>
 
 #include <cstdlib>

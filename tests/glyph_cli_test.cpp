@@ -159,7 +159,7 @@ TEST_F(GlyphCli, BoxesAreFreeTypesBitmapBoxes) {
 TEST_F(GlyphCli, PixelsAgreeWithFreeTypeWithinItsFlatteningError) {
     // FreeType flattens coarser (up to ~0.1 px on conics) and rounds points to 1/64 px; bezel is
     // exact to 0.01 px. Against the 16x16 reference FreeType's own error is ~1.7/255 mean and up
-    // to ~55/255 in its worst pixel (README), so that is the agreement to expect; a glyph off by
+    // to ~55/255 in its worst pixel (docs/rasterizer.md), so that is the agreement to expect; a glyph off by
     // a pixel would differ by tens of levels on average.
     FreeType ft(kDejaVu);
     json doc = run_json({kDejaVu, "--text", "Rg@&8", "--font-size", "20", "--offset", "0.4,0.2"});

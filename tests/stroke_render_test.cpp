@@ -184,7 +184,7 @@ TEST(StrokeRender, DenseRandomPathsMatchDistanceReference) {
                 "band %.3f, worst elsewhere %.4f\n", mean, band, far);
 }
 
-// The README's picture: DejaVu Sans 'g' at 96 px, its outline stroked 3 px wide with round
+// The picture in docs/curves.md: DejaVu Sans 'g' at 96 px, its outline stroked 3 px wide with round
 // joins, filled NonZero (OverlapMode::Accurate) as ink on white. Compared with the golden
 // within ±2 levels per pixel (the stroke pins the geometry; the rasterizer's and the font
 // module's last-bit rounding may move). Regenerate with BEZEL_UPDATE_GOLDEN=1 after a

@@ -81,9 +81,9 @@ struct Options {
     std::vector<std::string> fonts;
     std::vector<int> sizes{12, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512};
     bool all_glyphs = false;
-    // 15, as the README's status runs: on the 2-core Zen 4 guest the minimum of 5 was not enough
-    // (2026-12-04, three default runs at 5: 6 of the 36 ratios at 96-512 px under 2x, 1.76-1.99,
-    // the worst 1.76 where the next run gave 2.31; two runs at 15: all 2.04-2.44).
+    // 15, as the status runs of docs/rasterizer.md: on a guest whose speed drifts for minutes at
+    // a time the minimum of 5 let the drift through (a ratio of 1.76 where the next run gave
+    // 2.31; docs/perf-log.md).
     int reps = 15;
     int inner = 0;  // 0: adaptive (see time_ns_per_glyph); N: exactly N passes per rep
     bool json = false;

@@ -14,9 +14,9 @@
 // start on a byte boundary) and the last with the final block, so their concatenation is one
 // valid deflate stream. The Adler-32s of the bands are joined with zlib's adler32_combine.
 //
-// Why igzip: on the 716×2361 benchmark page in 64-row bands (one thread, idle 2-core VM, min of
-// 20), igzip level 1 takes 3.7 ms for 292 795 bytes, where zlib level 1 (libpng's fastest, used
-// before) took about 11 ms for 299 587 bytes; valgrind counts 22 M against 61 M instructions.
+// Why igzip: on the 716×2361 benchmark page in 64-row bands (one thread), igzip level 1 takes
+// 3.7 ms for 292 795 bytes, where zlib level 1 (libpng's fastest) takes about 11 ms for 299 587
+// bytes (22 M against 61 M instructions).
 // igzip level 0 is faster still (2.5 ms) but 16 % larger.
 //
 // Why 64-row bands whatever the thread count: a worker can start while a page of text is still

@@ -40,11 +40,9 @@ using StemRowsFn = void (*)(const Band& band, int r0, int r1, int ic, double x0,
                             double dxdy, double dir);
 // draw_line gives a steep edge's full rows to those kernels when it has at least this many.
 // The kernels draw eight rows (one group) a step, masking the rows of a partial group, so an
-// edge need not cross a whole aligned group. Measured (bench_raster, alternating rounds, Xeon
-// Sapphire Rapids, 2026-12-02) against whole groups only: from 4 full rows, 1-5 % faster per
-// glyph at 12-192 px and within noise at 256-512 px; from 2, 4 % slower at 384 px; 6 and 8
-// no better than 4. Drawing the partial first and last rows in the kernel as well (blending
-// in y0, y1 and x0, x1) was 2-18 % slower than the scalar rows at every size.
+// edge need not cross a whole aligned group. Below 4 rows a kernel call costs more than the
+// scalar rows it replaces; the first and last partial rows stay scalar, since blending their
+// y and x ends in the kernel was slower at every size (the A/B is in docs/perf-log.md).
 inline constexpr int kVectorMinRows = 4;
 struct SteepKernels {
     SteepRowsFn steep[2];  // indexed by kMark
@@ -332,9 +330,9 @@ inline void draw_line(const Band& band, double x0, double y0, double x1, double 
         return;
     }
     // Shallow. In sparse bands a row piece that crosses one column border or none (two thirds
-    // of them at 256 px; most others cross two or three) is a narrow piece: three cells, no loop,
-    // 2-5 % less time a glyph at 192-512 px. In dense bands it measured 2-6 % slower at 12-48 px
-    // (where such pieces are rare and the function's code is what changed), so not there.
+    // of them at 256 px; most others cross two or three) is a narrow piece: three cells, no loop.
+    // Dense bands keep the column walk: there such pieces are rare, and the extra test made the
+    // small sizes slower (docs/perf-log.md).
     const double inv_slope = ady / adx;  // adx > ady > 0
     const double slope = dir * inv_slope;  // signed as the row pieces' dy
     for (; j <= jl; ++j) {

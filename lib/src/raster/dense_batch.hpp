@@ -6,15 +6,9 @@
 //
 // Why single precision. In a dense box the batch's lane arithmetic (the classification of each
 // segment, the three cell values of its narrow piece, the cut at a row border) is most of a
-// glyph's vector work. Eight float lanes do per instruction what four double lanes did, in half
-// the loop steps, mask branches and transposes. (The motive was the inference that the vector
-// pipes are what a fill keeps busy, draw_batch_avx2.cpp; a later probe that added independent
-// vector operations per piece found them nearly free, so the gain is more likely the steps.)
-// Against the double four-lane batch it replaced (bench_raster, 8 alternating rounds in each
-// order, AMD Zen 4 guest, 2026-12-02): 6-11 % less time a glyph at 12-64 px and 0-9 % at
-// 96 px, 6 % fewer instructions at 12 and 48 px (callgrind). The four-lane baseline copy
-// against the double SSE2 pair loop it replaced (the same machine with the AVX2 batches
-// switched off): 0-5 % at 12-24 px, 11-20 % at 48-96 px.
+// glyph's vector work. Eight float lanes do per instruction what four double lanes do, in half
+// the loop steps, mask branches and transposes; both copies are faster than the double batches
+// (draw_batch.hpp), most at 12-64 px (docs/perf-log.md).
 //
 // What rounding to float costs. The walk hands over each vertex rounded to the nearest float, so
 // the batch draws the polygon of the rounded vertices, exactly up to float arithmetic. The
@@ -96,9 +90,8 @@ inline SegmentBatch::Segment widen(__m128 f) {
 // group the edge misses add zeros (rows past the band's last are storage of its last group,
 // which the sweep zeroes whole). The column of eight rows is one aligned vector (or two),
 // as the sweep's (column-major groups), so a group is two vector adds, not sixteen cell adds.
-// Stems were set aside for draw_line before (1.6 a glyph at 12 px, DejaVu Sans; 5.3 at 64 px):
-// drawn here, 1.7-3.2 % less time a glyph at 12-96 px (bench_raster, 6 alternating rounds in
-// each order, Zen 4, 2026-12-02) and 1.4 % / 3.6 % fewer instructions at 12 / 64 px.
+// Drawn here rather than set aside for draw_line (1.6 stems a glyph at 12 px, DejaVu Sans; 5.3
+// at 64 px), they skip the set-aside loop's per-segment prologue.
 // The values are draw_line's formula in float: x at each row border from the end point
 // (x₀ + (y − y₀)·dxdy, no drift), within float rounding of draw_line's double ones.
 template <typename L>

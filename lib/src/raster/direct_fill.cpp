@@ -206,9 +206,8 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     // for it (a refused path allocates nothing).
     // A translation (glyphs placed at a pen position, and the identity) is not stored: the
     // walk reads the path's own points and adds (e, f) as it goes, which skips the products
-    // and a store per point. The transform was 6 % of a glyph's time at 12 px (perf, Zen 4);
-    // this is 1-4 % less time a glyph at 12-96 px (bench_raster, 6 alternating rounds in each
-    // order, Zen 4, 2026-12-02).
+    // and a store per point (the transform was a noticeable share of a small glyph's time).
+    // The walk's x + e is the same double as the stored product's, so the polyline is the same.
     std::vector<Point>& tp = scratch.points;
     const bool translate = m.a == 1.0 && m.b == 0.0 && m.c == 0.0 && m.d == 1.0;
     // tp only grows (a resize per fill was a call, and zeroed what the transform overwrites).
@@ -281,12 +280,9 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
             draw_path<kMark, kSplit, false>(path, points, offset, shift, tol, band, four);
     };
     if (row_blocks(box_w) <= kDenseBlocks) {
-        // Every dense box cuts segments across one row border (dense_batch.hpp). With the old
-        // double pair loop on CPUs without AVX2 that was slower below 32 rows (3 % at 12-24 px),
-        // and only taller boxes cut there; the float batch cuts a whole step's lanes at once,
-        // and in its four-lane copy cutting every box measured 2-10 % faster at 12-32 px than
-        // from 32 rows (the AVX2 batches switched off, 8 alternating rounds in each order,
-        // Zen 4, 2026-12-02), as the AVX2 copy had measured before (0-6 % at 12-64 px).
+        // Every dense box cuts segments across one row border (dense_batch.hpp), on every CPU:
+        // the float batch cuts a whole step's lanes at once, so cutting pays in small boxes too
+        // (unlike draw_batch.hpp's double pair loop, which cuts only from 32 rows).
         draw(std::false_type{}, std::true_type{});
         sweep_dense(kernels, rule, acc, stride, box_w, box_h, target.row(by0) + bx0,
                     target.stride);

@@ -16,9 +16,8 @@
 // Two regimes by box width: a box of at most kDenseBlocks blocks per row (small sizes) is DENSE —
 // edges mark no blocks and the whole band is summed in one sweep call, since nearly every block
 // holds an edge anyway; wider boxes mark blocks so the sweep fills empty and solid runs without
-// summing them. The threshold was measured (bench_raster, alternating runs of builds with 2, 4,
-// 6 and 10): with the grouped band, 6 blocks (96 px) is as fast as the others up to 256 px and
-// 7-9 % faster than 10 at 384-512 px.
+// summing them. 6 blocks (96 px) was chosen against 2, 4, 8 and 10: none is faster at every
+// size, and 10 is slower at 384-512 px (docs/perf-log.md).
 #pragma once
 
 #include "raster/sse2.hpp"
@@ -46,8 +45,8 @@ struct DirectScratch {
 // p + ef, and nan all ones in a lane where one of them was NaN (the box is then of no meaning).
 // The direct route's first pass for a translation (the identity included): the same IEEE
 // additions as its baseline loop, and min, max and or are exact, so the results are the same.
-// AVX2, two points a vector: half the baseline loop's instructions (252 a glyph at 12 px on
-// DejaVu Sans, callgrind). Null when the CPU (or the build) has no AVX2; decided once.
+// AVX2, two points a vector: half the baseline loop's instructions. Null when the CPU (or the
+// build) has no AVX2; decided once.
 using TranslatedBoxFn = void (*)(const Point* p, std::size_t n, __m128d ef, __m128d& lo,
                                  __m128d& hi, __m128d& nan);
 TranslatedBoxFn avx2_translated_box();

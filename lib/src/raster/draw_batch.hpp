@@ -9,13 +9,11 @@
 // add_narrow_piece, the scalar reference), and only the cell updates are per segment.
 // With kSplit, a segment that crosses one row border and moves at most 1 in x is cut there into
 // two such pieces (at 48 px: 30 of 69 segments a glyph, two thirds of them stems); other
-// segments are set aside and drawn by draw_line after the pair loop (see draw_lines). Measured
-// (bench_raster, alternating runs): cutting here is 3-8 % faster per glyph in dense boxes of 32
-// rows or more (48-96 px), and slower in smaller boxes (3 % at 12-24 px) and in sparse bands
-// (5 % at 256 px), so with this loop direct_fill.cpp asks for it only there.
-// On AVX2 CPUs the direct route uses the four-lane copy of this loop (draw_batch_avx2.cpp): the
-// same band, 9 % fewer instructions a glyph at 12 px (callgrind) and 1-10 % less time at
-// 12-512 px (bench_raster, 6 alternating rounds each way, 2026-12-02). This loop stays the
+// segments are set aside and drawn by draw_line after the pair loop (see draw_lines). Cutting
+// here pays in dense boxes of 32 rows or more (48-96 px) and costs in smaller boxes and in
+// sparse bands, so with this loop direct_fill.cpp asks for it only there (docs/perf-log.md).
+// On AVX2 CPUs the direct route uses the four-lane copy of this loop (draw_batch_avx2.cpp),
+// which leaves the same band. This loop stays the
 // reference and the baseline for marked (sparse) bands. Dense bands now take the float batch
 // of dense_batch.hpp instead, on every CPU; this loop, in double, is the reference it is
 // tested against (within float rounding).
@@ -78,10 +76,9 @@ inline void draw_or_split(SegmentBatch& b, const SegmentBatch::Segment& s, int& 
 }
 
 // The set-aside segments, after the pair loop, with draw_line inlined into one loop. Called from
-// the pair loop instead, each draw_line paid a call (about 60 instructions of saves, restores
-// and moving the lane's coordinates out, DejaVu Sans at 12 px, callgrind) and the pair loop
-// spilled its constants around it; deferred, a glyph at 12 px runs 6 % fewer instructions and
-// measured 2-15 % faster at 12-512 px (bench_raster, 8 alternating rounds each way, 2026-12-02).
+// the pair loop instead, each draw_line would pay a call (about 60 instructions of saves,
+// restores and moving the lane's coordinates out) and the pair loop would spill its constants
+// around it.
 // Deferring only reorders float additions into the band.
 // Internal linkage: draw_batch_avx2.cpp calls it too; it includes this header before its AVX2
 // region, but should a copy ever be compiled for AVX2, the linker must not pick it for the
@@ -120,12 +117,10 @@ const BatchKernels* avx2_batch_kernels();
 // hi − xm is exactly 0) and the three cell values of add_narrow_piece.
 // The test is "inside one row and two columns", which add_narrow_piece draws exactly whatever
 // the width (within_two_columns; a piece ending on the far border at ⌊min x⌋ + 2 adds its
-// second column's half to the cell after it, as it should). Widths up to 1 only, as before,
-// left the one-row shallow pieces of 48-96 px to draw_line (about 9 a glyph at 64 px): taking
-// them is 4 % fewer instructions there, within noise in time (0-4 %, 2026-12-02).
-// (Masking the slow lanes into harmless zero updates instead of branching was measured slower:
-// all those updates then hit the same cells, one chain; in the four-lane batch, with each lane
-// adding its zeros to its own cells, 5-18 % slower at 12-64 px, 2026-12-02.)
+// second column's half to the cell after it, as it should). So the one-row shallow pieces of
+// 48-96 px (about 9 a glyph at 64 px) are drawn here too, not by draw_line.
+// Slow lanes are branched around, not masked into zero updates: the branches predict well,
+// and masked lanes add work to every step (slower in both forms tried, docs/perf-log.md).
 template <bool kMark, bool kSplit>
 inline void draw_batch(const Band& band, SegmentBatch& b, int n) {
     SegmentBatch::Segment* const seg = b.seg;

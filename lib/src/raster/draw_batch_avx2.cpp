@@ -12,9 +12,8 @@
 // integer work, NarrowFour); and the segments kSplit cuts are listed, not
 // appended as halves: after the fast lanes they are drawn four at a time, both pieces of each
 // computed in registers (x at the row border as draw_or_split has it) and added in the order the
-// SSE2 loop adds its appended halves. Against appending the halves and classifying them again:
-// 3-4 % less time per glyph at 12-16 px, within noise (±1 %) at 24-128 px (bench_raster, 4
-// alternating rounds, Xeon Sapphire Rapids, 2026-12-02), 2.4 % fewer instructions at 12 px.
+// SSE2 loop adds its appended halves. That saves classifying the halves a second time, which
+// matters at small sizes, where cut segments are a large share of a glyph (docs/perf-log.md).
 #include <cstdint>
 
 #include "raster/draw_batch.hpp"
@@ -110,11 +109,9 @@ inline Four gather_four(const SegmentBatch::Segment* s, const int* idx) {
 
 // The cells four narrow pieces add to (draw_batch's lane arithmetic): three values and the row
 // and first column of each lane. The cell's address is then found per lane by scalar integer
-// code (add_narrow), not in the vector: on Zen 4 that measured 1-2 % faster per glyph at
-// 12-96 px (6 alternating rounds each order, 2026-12-02), though it is 6 % more instructions.
-// The likely reason (not confirmed: no hardware counters there) is that the vector and
-// floating-point pipes carry nearly all of a fill's work, so these integer operations run
-// beside them on otherwise idle ALUs. Measured on Zen 4 only.
+// code (add_narrow), not in the vector: more instructions, yet no slower and at small sizes
+// slightly faster (docs/perf-log.md), plausibly because the integer ALUs are otherwise idle
+// while the vector pipes carry the lane arithmetic (not confirmed with hardware counters).
 struct NarrowFour {
     alignas(16) float c0[4], c1[4], c2[4];
     alignas(16) int row[4], col[4];

@@ -19,7 +19,7 @@
 // Error bound: exact up to floating point — the crossings are found in double, so a slab may
 // hold a residual crossing displaced by ~1e-12 px, an error of that order times the row width.
 // Measured against the 16×16 supersampled reference, it matches the plain rasterizer's error on
-// non-overlapping outlines (tests/raster_overlap_test.cpp, README).
+// non-overlapping outlines (tests/raster_overlap_test.cpp, docs/rasterizer.md).
 //
 // Cost: per row, O(k²) crossing tests for k edges active in it, then O(k log k) per slab. Two
 // walls bound it (below); a row past the first, and every row once the second is reached, keeps

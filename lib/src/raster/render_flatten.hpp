@@ -74,10 +74,9 @@ inline double len2(V2 a) {
 // dependent square roots at the head of every curve.
 // The compares are packed, two per instruction, and their all-ones results summed as integers:
 // a compare and a flag-to-integer move each, scalar, were the bulk of a curve's setup.
-// The second step was added on 2026-12-02: at 0.01 px a quarter circle of radius 3 px already
-// takes 11 steps, and 40 % of Cantarell's cubics at 12 px (62 % at 24 px) took the square roots.
-// With ⌈s⌉ by truncation past 16 as well, 0-6 % faster per glyph at 12-96 px (4 alternating
-// rounds, Sapphire Rapids), most on the cubic Cantarell (3.5-5.4 % at 12-48 px).
+// Why two steps and not one up to 8: at 0.01 px a quarter circle of radius 3 px already takes
+// 11 steps, and 40 % of Cantarell's cubics at 12 px (62 % at 24 px) need more than 8. Past 16,
+// ⌈s⌉ is found by truncation.
 // i⁴ for i = 1..16: s > i exactly when t = s⁴ > i⁴.
 inline constexpr double kStepFourth[16] = {1.0,    16.0,    81.0,    256.0,   625.0,   1296.0,
                                            2401.0, 4096.0,  6561.0,  10000.0, 14641.0, 20736.0,

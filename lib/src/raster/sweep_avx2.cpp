@@ -41,8 +41,8 @@ inline __m256 coverage8(__m256 a) {
 // Non-zero skips coverage8's min(·, 1): round(255·|a|) saturates to 255 exactly when
 // min(|a|, 1) would have given 255, so the bytes are the same. |a| is at most the winding count,
 // ≤ kMaxEdges = 2²² (plus rounding), so 255·|a| < 2³¹ and the conversion cannot overflow.
-// One instruction fewer per eight pixels: 1-6 % less time per glyph at 96-256 px, within noise
-// at 12-64 px (bench_raster, 8 alternating rounds each order, Zen 4, 2026-12-02).
+// One instruction fewer per eight pixels, which shows at the larger sizes, where the sweep is
+// a large share of a glyph.
 template <FillRule R>
 inline __m256i coverage8_u8(__m256 a) {
     static_assert(255.0 * 2.0 * kMaxEdges < 2147483648.0, "255·|winding| must fit an int32");

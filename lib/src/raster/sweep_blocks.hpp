@@ -11,8 +11,8 @@
 //                                rows [0, rows) (1..8)
 //   void clear(float* acc)       zeroes kBlock columns (a guard block), with the policy's own
 //                                vector stores: a 512-byte memset compiles to `rep stos`,
-//                                whose start-up cost was 3.7 % of the dense sweep at 96 px
-//                                (perf, Zen 4) for one guard block a group
+//                                whose start-up cost is large against one guard block a
+//                                group (3.7 % of the dense sweep at 96 px)
 #pragma once
 
 #include <algorithm>
@@ -81,9 +81,8 @@ inline void fill_group_run(float* out, std::ptrdiff_t out_stride, int rows, int 
 // The sparse group: marked blocks are summed, the runs between them filled. The group's rows
 // are cleared first (one memset a row) and runs of coverage 0 in all eight rows then skipped:
 // outside the glyph and in its counters most runs are empty, and a memset of the whole row
-// writes them faster than run-by-run stores (measured, bench_raster alternating runs: 5-7 % less time per
-// glyph at 192-512 px; the earlier fill wrote 128 bytes unconditionally at every run and let the
-// next block overwrite the spill, which a skipped run no longer does). The marked blocks
+// writes them faster than run-by-run stores (docs/perf-log.md). A skipped run writes nothing,
+// so no run may rely on the next block overwriting a spill past its end. The marked blocks
 // are found eight flags at a time (a little-endian word of 0/1 bytes has a set bit at 8k for
 // each marked block k, so ctz / 8 is the next one and word & (word − 1) drops it), which costs
 // no branch per unmarked block: at large sizes a row is mostly runs. Guard blocks past the
