@@ -11,7 +11,7 @@
 // Polyline vertices lie on the curve (up to rounding) and curve end points are copied exactly.
 //
 // Methods. Segments over all glyphs of DejaVu Sans at 512 px, tolerance 0.0625 px, measured max
-// error in px (tools/bench/flatten_bench; the full table is in the README):
+// error in px (tools/bench/flatten_bench; the full table is in docs/curves.md):
 //   WangUniform          831 k, 0.0615. n = ⌈√(d(d−1)·M / (8·tol))⌉ uniform steps, points by
 //                        forward differencing. Branch-free, predictable, fastest: the default.
 //   DistanceSubdivision  960 k, 0.0625. de Casteljau halving until the control points are close
