@@ -149,13 +149,14 @@ private:
     std::vector<Rgba8> pixels_;
 };
 
+// Order of the subpixels in a display pixel, left to right (an LCD panel's layout). Also the
+// order of the three coverage bytes of a display pixel in an LCD mask.
+enum class LcdOrder : std::uint8_t { Rgb, Bgr };
+
 // Blends `color` through the coverage `mask` onto `image` with the mask's top-left pixel at
 // (x, y) (parts outside the image are clipped), in linear light: for each channel
 // out = enc(lerp(dec(dst), dec(color), coverage·color.a)). Alpha is composited "over".
 void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color);
-// Order of the subpixels in a display pixel, left to right (an LCD panel's layout). Also the
-// order of the three coverage bytes of a display pixel in an LCD mask.
-enum class LcdOrder : std::uint8_t { Rgb, Bgr };
 // The same for an LCD mask (3 bytes per pixel, `mask.width` = 3 × pixels, the bytes of each
 // pixel in `order`: R, G, B or B, G, R): each colour channel uses its own subpixel coverage.
 // Masks from the Rasterizer's CoverageFormat::Lcd are R, G, B in memory for either panel order:

@@ -170,10 +170,13 @@ public:
     // a box under 64 px) and a pixel's coverage by no more.
     // CoverageFormat::Lcd: `transform` maps to DISPLAY pixels and the caller leaves
     // kLcdPaddingPx display pixels of room on each side of the outline.
-    // Errors as fill (Lcd into a FloatMaskView is not implemented), plus a transform that is not
-    // finite, a path that would flatten to more than kMaxEdges segments (estimated by Wang's
-    // bound before flattening, so nothing is allocated for it), and in Lcd format a target width
-    // that is not a multiple of 3. Allocates nothing once its scratch has grown, as fill.
+    // Errors, each leaving the target unchanged: CoverageFormat::Lcd into a FloatMaskView (not
+    // implemented, named in the message), a target or origin fill would refuse, a transform that
+    // is not finite, a path point that is not finite or beyond kMaxFlattenCoordinatePx after it,
+    // a path that would flatten to more than kMaxEdges segments (estimated by Wang's bound before
+    // flattening, so nothing is allocated for it), and in Lcd format a target width that is not
+    // a multiple of 3.
+    // Allocates nothing once its scratch has grown to the largest target and path used.
     Status fill_path(const Path& path, const Affine& transform, const MaskView& target,
                      const FillOptions& options = {});
     Status fill_path(const Path& path, const Affine& transform, const FloatMaskView& target,

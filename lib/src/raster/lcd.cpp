@@ -48,8 +48,8 @@ void filter_row(const float* samples, int width, const LcdFilter& f, LcdOrder or
 
 }  // namespace
 
-Status Rasterizer::fill_path_lcd(const Path& path, const Affine& transform, const MaskView& target,
-                                 const FillOptions& options) {
+Status Rasterizer::fill_path_lcd(const Path& path, const Affine& transform,
+                                 const MaskView& target, const FillOptions& options) {
     const int W = target.width, H = target.height;
     const int samples_w = W + 2 * kFilterReach;
     if (W < 0 || H < 0 || samples_w > kMaxBitmapDim || H > kMaxBitmapDim)
