@@ -137,7 +137,7 @@ Affine moved_by(const Affine& transform, Vec2 origin) {
     return m;
 }
 
-const char* kOriginNotFinite = "raster origin is not finite (NaN or infinity)";
+constexpr char kOriginNotFinite[] = "raster origin is not finite (NaN or infinity)";
 
 }  // namespace
 
