@@ -148,15 +148,15 @@ TEST(BlendMaskGray, EqualsTheRgbaBlendOfTheSameGraysPixelForPixel) {
 TEST(BlendLcdMask, EachChannelTakesItsSubpixel) {
     const std::uint8_t m[3] = {255, 0, 0};  // only the first subpixel covered
     Image rgb(1, 1, kWhite), bgr(1, 1, kWhite);
-    blend_lcd_mask(rgb, ConstMaskView(m, 3, 1, 3), 0, 0, kBlack, false);
-    blend_lcd_mask(bgr, ConstMaskView(m, 3, 1, 3), 0, 0, kBlack, true);
+    blend_lcd_mask(rgb, ConstMaskView(m, 3, 1, 3), 0, 0, kBlack, LcdOrder::Rgb);
+    blend_lcd_mask(bgr, ConstMaskView(m, 3, 1, 3), 0, 0, kBlack, LcdOrder::Bgr);
     EXPECT_EQ(rgb.at(0, 0), (Rgba8{0, 255, 255, 255}));
     EXPECT_EQ(bgr.at(0, 0), (Rgba8{255, 255, 0, 255}));
     // Equal subpixels blend exactly as the gray mask does.
     const std::uint8_t even[3] = {128, 128, 128};
     std::uint8_t gray = 128;
     Image a(1, 1, kWhite), b(1, 1, kWhite);
-    blend_lcd_mask(a, ConstMaskView(even, 3, 1, 3), 0, 0, kBlack, false);
+    blend_lcd_mask(a, ConstMaskView(even, 3, 1, 3), 0, 0, kBlack, LcdOrder::Rgb);
     blend_mask(b, ConstMaskView(&gray, 1, 1, 1), 0, 0, kBlack);
     EXPECT_EQ(a, b);
 }

@@ -40,12 +40,12 @@ TEST(Limits, BitmapLargerThankMaxBitmapDimIsAnError) {
     Rasterizer raster;
     std::uint8_t pixel = 0;
     // The size is checked before the (single-pixel) memory is touched.
-    expect_error(raster.fill(square, FillRule::NonZero,
-                             MaskView{&pixel, kMaxBitmapDim + 1, 1, kMaxBitmapDim + 1}),
+    expect_error(raster.fill(square, MaskView{&pixel, kMaxBitmapDim + 1, 1, kMaxBitmapDim + 1},
+                             {FillRule::NonZero}),
                  std::to_string(kMaxBitmapDim + 1));
     EXPECT_EQ(pixel, 0);
     std::uint8_t row[4] = {};
-    EXPECT_TRUE(raster.fill(square, FillRule::NonZero, MaskView{row, 4, 1, 4}));
+    EXPECT_TRUE(raster.fill(square, MaskView{row, 4, 1, 4}, {FillRule::NonZero}));
 }
 
 TEST(Limits, FillWithMoreThankMaxEdgesIsRefusedBeforeFlattening) {
@@ -58,8 +58,8 @@ TEST(Limits, FillWithMoreThankMaxEdgesIsRefusedBeforeFlattening) {
     fine.tolerance_px = kMinFlattenTolerancePx;
     Rasterizer raster;
     std::uint8_t pixels[16] = {};
-    auto status = raster.fill_path(path, Affine::identity(), FillRule::NonZero,
-                                   MaskView{pixels, 4, 4, 4}, fine);
+    auto status = raster.fill_path(path, Affine::identity(), MaskView{pixels, 4, 4, 4},
+                                   {FillRule::NonZero, OverlapMode::Accumulate, fine});
     ASSERT_FALSE(status.ok());
     EXPECT_EQ(status.error().message.find('\n'), std::string::npos);
     // Nothing was allocated for it: 4 Mi edges would need far more than the band scratch.

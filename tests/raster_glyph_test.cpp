@@ -56,10 +56,11 @@ void measure(Rasterizer& rast, const Rendered& g, ErrorStats& stats) {
     Affine to_box = Affine::translate({-double(g.x0), -double(g.y0)});
     FlattenOptions fine;  // 1/16 px at 16× = 1/256 px at the glyph's size
     fine.tolerance_px = 1.0 / 16.0;
-    ASSERT_TRUE(rast.fill_path(g.path, Affine::scale(16.0) * to_box, FillRule::NonZero,
-                               FloatMaskView{big.data(), W, H, W}, fine).ok());
+    ASSERT_TRUE(rast.fill_path(g.path, Affine::scale(16.0) * to_box,
+                               FloatMaskView{big.data(), W, H, W},
+                               {FillRule::NonZero, OverlapMode::Accumulate, fine}).ok());
     Mask mine(g.width, g.height);
-    ASSERT_TRUE(rast.fill_path(g.path, to_box, FillRule::NonZero, mine.view()).ok());
+    ASSERT_TRUE(rast.fill_path(g.path, to_box, mine.view(), {FillRule::NonZero}).ok());
     for (int y = 0; y < g.height; ++y) {
         for (int x = 0; x < g.width; ++x) {
             double ref = 0.0;
@@ -127,8 +128,8 @@ TEST(RasterGlyphs, GoldenDejaVuGAt24Px) {
     ASSERT_GT(g.width, 0);
     Mask m(g.width, g.height);
     Rasterizer r;
-    ASSERT_TRUE(r.fill_path(g.path, Affine::translate({-double(g.x0), -double(g.y0)}),
-                            FillRule::NonZero, m.view()).ok());
+    ASSERT_TRUE(r.fill_path(g.path, Affine::translate({-double(g.x0), -double(g.y0)}), m.view(),
+                            {FillRule::NonZero}).ok());
     check_golden(m, "dejavu_g_24");
 }
 
@@ -139,8 +140,8 @@ TEST(RasterGlyphs, GoldenCantarellAmpersandAt48PxSubpixelOrigin) {
     ASSERT_GT(g.width, 0);
     Mask m(g.width + 1, g.height + 1);
     Rasterizer r;
-    ASSERT_TRUE(r.fill_path(g.path, Affine::translate({0.25 - g.x0, 0.5 - g.y0}),
-                            FillRule::NonZero, m.view()).ok());
+    ASSERT_TRUE(r.fill_path(g.path, Affine::translate({0.25 - g.x0, 0.5 - g.y0}), m.view(),
+                            {FillRule::NonZero}).ok());
     check_golden(m, "cantarell_ampersand_48_subpixel");
 }
 
@@ -153,7 +154,7 @@ TEST(RasterGlyphs, GoldenDejaVuAtSignEvenOddRotated) {
     Rasterizer r;
     Affine t = Affine::translate({24, 24}) * Affine::rotate(0.5) *
                Affine::translate({-(g.x0 + g.width / 2.0), -(g.y0 + g.height / 2.0)});
-    ASSERT_TRUE(r.fill_path(g.path, t, FillRule::EvenOdd, m.view()).ok());
+    ASSERT_TRUE(r.fill_path(g.path, t, m.view(), {FillRule::EvenOdd}).ok());
     check_golden(m, "dejavu_at_32_rotated_evenodd");
 }
 

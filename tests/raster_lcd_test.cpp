@@ -1,4 +1,4 @@
-// LCD subpixel fills (Rasterizer::fill_path_lcd) and the GammaTable.
+// LCD subpixel fills (Rasterizer::fill_path with CoverageFormat::Lcd) and the GammaTable.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -32,10 +32,20 @@ Path circle(Point c, double radius) {
     return p;
 }
 
+FillOptions lcd_options(LcdOrder order = LcdOrder::Rgb,
+                        OverlapMode mode = OverlapMode::Accumulate) {
+    FillOptions o;
+    o.rule = FillRule::NonZero;
+    o.overlap = mode;
+    o.format = CoverageFormat::Lcd;
+    o.lcd_order = order;
+    return o;
+}
+
 Mask lcd(Rasterizer& r, const Path& p, int display_w, int h, LcdOrder order = LcdOrder::Rgb,
          OverlapMode mode = OverlapMode::Accumulate) {
     Mask m(display_w * 3, h);
-    EXPECT_TRUE(r.fill_path_lcd(p, Affine::identity(), FillRule::NonZero, order, m.view(), mode).ok());
+    EXPECT_TRUE(r.fill_path(p, Affine::identity(), m.view(), lcd_options(order, mode)).ok());
     return m;
 }
 
@@ -96,8 +106,8 @@ TEST(Lcd, FilterKeepsTotalCoverage) {
     Rasterizer r;
     const Mask m = lcd(r, p, 19, 18);
     std::vector<float> samples(57 * 18);
-    ASSERT_TRUE(r.fill_path(p, Affine::scale(3.0, 1.0), FillRule::NonZero,
-                            FloatMaskView{samples.data(), 57, 18, 57})
+    ASSERT_TRUE(r.fill_path(p, Affine::scale(3.0, 1.0), FloatMaskView{samples.data(), 57, 18, 57},
+                            {FillRule::NonZero})
                     .ok());
     double total_samples = 0, total_out = 0;
     int nonzero = 0;
@@ -129,9 +139,7 @@ TEST(Lcd, TallTargetsUseBandsWithTheSameResult) {
     // Rows are independent: the same circle moved down by 90 rows gives the same rows.
     Path q = p.transformed(Affine::translate({0, 90.0}));
     Mask moved(1800, 290);
-    ASSERT_TRUE(r.fill_path_lcd(q, Affine::identity(), FillRule::NonZero, LcdOrder::Rgb,
-                                moved.view())
-                    .ok());
+    ASSERT_TRUE(r.fill_path(q, Affine::identity(), moved.view(), lcd_options()).ok());
     for (int y = 0; y < 200; y += 7)
         for (int k = 0; k < 1800; ++k) ASSERT_EQ(moved.at(k, y + 90), m.at(k, y)) << k << "," << y;
 }
@@ -141,17 +149,16 @@ TEST(Lcd, Errors) {
     add_rect(p, 1, 1, 2, 2);
     Rasterizer r;
     Mask m(10, 4);  // not a multiple of 3
-    EXPECT_FALSE(r.fill_path_lcd(p, Affine::identity(), FillRule::NonZero, LcdOrder::Rgb, m.view()).ok());
-    EXPECT_FALSE(r.fill_path_lcd(p, Affine::identity(), FillRule::NonZero, LcdOrder::Rgb,
-                                 MaskView{nullptr, 9, 4, 9})
-                     .ok());
+    EXPECT_FALSE(r.fill_path(p, Affine::identity(), m.view(), lcd_options()).ok());
+    EXPECT_FALSE(
+        r.fill_path(p, Affine::identity(), MaskView{nullptr, 9, 4, 9}, lcd_options()).ok());
     Mask ok(9, 4);
     ok.at(0, 0) = 9;
     const Affine bad{1, 0, 0, 1, HUGE_VAL, 0};
-    EXPECT_FALSE(r.fill_path_lcd(p, bad, FillRule::NonZero, LcdOrder::Rgb, ok.view()).ok());
+    EXPECT_FALSE(r.fill_path(p, bad, ok.view(), lcd_options()).ok());
     EXPECT_EQ(ok.at(0, 0), 9);
-    EXPECT_FALSE(r.fill_path_lcd(p, Affine::identity(), FillRule::NonZero, LcdOrder::Rgb,
-                                 MaskView{ok.view().data, 3 * kMaxBitmapDim, 1, 9})
+    EXPECT_FALSE(r.fill_path(p, Affine::identity(),
+                             MaskView{ok.view().data, 3 * kMaxBitmapDim, 1, 9}, lcd_options())
                      .ok());
 }
 

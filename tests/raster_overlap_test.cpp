@@ -53,7 +53,7 @@ double union_coverage(Box a, Box b, int x, int y) {
 Mask render(Rasterizer& r, const Path& p, OverlapMode mode, int w, int h,
             FillRule rule = FillRule::NonZero, const Affine& m = Affine::identity()) {
     Mask out(w, h);
-    EXPECT_TRUE(r.fill_path(p, m, rule, mode, out.view()).ok());
+    EXPECT_TRUE(r.fill_path(p, m, out.view(), {rule, mode}).ok());
     return out;
 }
 
@@ -153,8 +153,8 @@ TEST(OverlapAccurate, OverlappingGlyphOIsExactAtEverySize) {
 std::vector<double> reference(Rasterizer& r, const Path& p, int w, int h) {
     const int W = w * 16, H = h * 16;
     std::vector<float> big(static_cast<std::size_t>(W) * H);
-    EXPECT_TRUE(r.fill_path(p, Affine::scale(16.0), FillRule::NonZero,
-                            FloatMaskView{big.data(), W, H, W})
+    EXPECT_TRUE(r.fill_path(p, Affine::scale(16.0), FloatMaskView{big.data(), W, H, W},
+                            {FillRule::NonZero})
                     .ok());
     std::vector<double> out(static_cast<std::size_t>(w) * h, 0.0);
     for (int y = 0; y < H; ++y)
@@ -311,10 +311,10 @@ TEST(OverlapAccurate, ErrorsAreFillPathsAndLeaveTheTarget) {
     Mask m(4, 4);
     m.at(0, 0) = 77;
     Affine bad{1, 0, 0, 1, std::nan(""), 0};
-    EXPECT_FALSE(r.fill_path(p, bad, FillRule::NonZero, OverlapMode::Accurate, m.view()).ok());
+    EXPECT_FALSE(r.fill_path(p, bad, m.view(), {FillRule::NonZero, OverlapMode::Accurate}).ok());
     EXPECT_EQ(m.at(0, 0), 77);
-    EXPECT_FALSE(r.fill_path(p, Affine::identity(), FillRule::NonZero, OverlapMode::Accurate,
-                             MaskView{nullptr, 4, 4, 4})
+    EXPECT_FALSE(r.fill_path(p, Affine::identity(), MaskView{nullptr, 4, 4, 4},
+                             {FillRule::NonZero, OverlapMode::Accurate})
                      .ok());
 }
 

@@ -30,6 +30,14 @@ namespace {
 using raster_detail::reference_coverage;
 using raster_detail::reference_u8;
 
+// Options of a polyline fill with `rule`, moved by `origin` (target pixels).
+FillOptions fill_at(FillRule rule, Vec2 origin) {
+    FillOptions o;
+    o.rule = rule;
+    o.origin = origin;
+    return o;
+}
+
 constexpr double kFloatTol = 1e-4;
 
 Polylines polygon(std::initializer_list<std::initializer_list<Point>> contours) {
@@ -104,7 +112,7 @@ TEST(RasterProperties, RectangleCoverageIsExactOverlapArea) {
     for (int trial = 0; trial < 2000; ++trial) {
         double x0 = u(rng), x1 = u(rng), y0 = u(rng), y1 = u(rng);
         FloatImage img(24, 24);
-        ASSERT_TRUE(r.fill(rect(x0, y0, x1, y1), FillRule::NonZero, img.view()).ok());
+        ASSERT_TRUE(r.fill(rect(x0, y0, x1, y1), img.view(), {FillRule::NonZero}).ok());
         double lx = std::min(x0, x1), hx = std::max(x0, x1);
         double ly = std::min(y0, y1), hy = std::max(y0, y1);
         for (int y = 0; y < 24; ++y) {
@@ -123,8 +131,8 @@ TEST(RasterProperties, EvenOddCancelsInnerLoop) {
     Polylines p = polygon({{{2, 2}, {18, 2}, {18, 18}, {2, 18}}, {{6, 6}, {14, 6}, {14, 14}, {6, 14}}});
     Rasterizer r;
     Mask eo(20, 20), nz(20, 20);
-    ASSERT_TRUE(r.fill(p, FillRule::EvenOdd, eo.view()).ok());
-    ASSERT_TRUE(r.fill(p, FillRule::NonZero, nz.view()).ok());
+    ASSERT_TRUE(r.fill(p, eo.view(), {FillRule::EvenOdd}).ok());
+    ASSERT_TRUE(r.fill(p, nz.view(), {FillRule::NonZero}).ok());
     for (int y = 0; y < 20; ++y) {
         for (int x = 0; x < 20; ++x) {
             bool outer = x >= 2 && x < 18 && y >= 2 && y < 18;
@@ -141,7 +149,7 @@ TEST(RasterProperties, EvenOddTriangleWaveOnFractionalInnerLoop) {
     Polylines p = polygon({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{3.25, 3}, {7, 3}, {7, 7}, {3.25, 7}}});
     Rasterizer r;
     FloatImage img(10, 10);
-    ASSERT_TRUE(r.fill(p, FillRule::EvenOdd, img.view()).ok());
+    ASSERT_TRUE(r.fill(p, img.view(), {FillRule::EvenOdd}).ok());
     EXPECT_NEAR(img.at(3, 4), 0.25, kFloatTol);  // 3/4 of the pixel wound twice
     EXPECT_NEAR(img.at(1, 4), 1.0, kFloatTol);
     EXPECT_NEAR(img.at(5, 5), 0.0, kFloatTol);
@@ -156,8 +164,8 @@ TEST(RasterProperties, CoverageIsInvariantUnderWholePixelTranslation) {
         Vec2 frac{(rng() % 64) / 64.0, (rng() % 64) / 64.0};
         FillRule rule = trial % 2 ? FillRule::EvenOdd : FillRule::NonZero;
         FloatImage a(26, 26), b(26, 26);
-        ASSERT_TRUE(r.fill(p, rule, a.view(), frac).ok());
-        ASSERT_TRUE(r.fill(p, rule, b.view(), frac + Vec2{double(dx), double(dy)}).ok());
+        ASSERT_TRUE(r.fill(p, a.view(), fill_at(rule, frac)).ok());
+        ASSERT_TRUE(r.fill(p, b.view(), fill_at(rule, frac + Vec2{double(dx), double(dy)})).ok());
         for (int y = 0; y + dy < 26; ++y)
             for (int x = 0; x + dx < 26; ++x)
                 ASSERT_NEAR(a.at(x, y), b.at(x + dx, y + dy), kFloatTol) << "trial " << trial;
@@ -170,7 +178,7 @@ TEST(RasterProperties, TotalCoverageEqualsPolygonArea) {
     for (int trial = 0; trial < 2000; ++trial) {
         Polylines p = random_star(rng, {20.0, 20.0}, 1.0, 18.0, 5 + trial % 40);
         FloatImage img(40, 40);
-        ASSERT_TRUE(r.fill(p, FillRule::NonZero, img.view()).ok());
+        ASSERT_TRUE(r.fill(p, img.view(), {FillRule::NonZero}).ok());
         double sum = 0.0;
         for (float v : img.px) sum += v;
         // Float accumulation: ~1e-6 relative per pixel, 1600 pixels.
@@ -193,8 +201,8 @@ TEST(RasterReference, FastPathMatchesReferenceOnRandomPolygons) {
         Vec2 origin{(rng() % 100) / 37.0 - 1.0, (rng() % 100) / 41.0 - 1.0};
         FloatImage f(w, h);
         Mask m(w, h);
-        ASSERT_TRUE(r.fill(p, rule, f.view(), origin).ok());
-        ASSERT_TRUE(r.fill(p, rule, m.view(), origin).ok());
+        ASSERT_TRUE(r.fill(p, f.view(), fill_at(rule, origin)).ok());
+        ASSERT_TRUE(r.fill(p, m.view(), fill_at(rule, origin)).ok());
         std::vector<double> ref = reference_coverage(p, rule, w, h, origin);
         std::vector<unsigned char> ref8 = reference_u8(p, rule, w, h, origin);
         for (std::size_t i = 0; i < ref.size(); ++i) {
@@ -215,7 +223,7 @@ TEST(RasterReference, MultiBandTallTargetMatchesReference) {
         Polylines p = random_polygon(rng, 12, -50.0, 1050.0);
         FillRule rule = trial % 2 ? FillRule::EvenOdd : FillRule::NonZero;
         Mask m(1000, 700);
-        ASSERT_TRUE(r.fill(p, rule, m.view(), {0.3, -0.7}).ok());
+        ASSERT_TRUE(r.fill(p, m.view(), fill_at(rule, {0.3, -0.7})).ok());
         std::vector<unsigned char> ref = reference_u8(p, rule, 1000, 700, {0.3, -0.7});
         for (std::size_t i = 0; i < ref.size(); ++i)
             ASSERT_LE(std::abs(int(m.pixels()[i]) - int(ref[i])), 1) << "trial " << trial << " i " << i;
@@ -235,7 +243,7 @@ TEST(RasterReference, NearHorizontalAndNearVerticalEdgesMatchReference) {
     };
     for (std::size_t c = 0; c < cases.size(); ++c) {
         FloatImage f(32, 32);
-        ASSERT_TRUE(r.fill(cases[c], FillRule::NonZero, f.view()).ok());
+        ASSERT_TRUE(r.fill(cases[c], f.view(), {FillRule::NonZero}).ok());
         std::vector<double> ref = reference_coverage(cases[c], FillRule::NonZero, 32, 32, {});
         for (std::size_t i = 0; i < ref.size(); ++i)
             ASSERT_NEAR(f.px[i], ref[i], kFloatTol) << "case " << c << " pixel " << i;
@@ -302,9 +310,9 @@ TEST(RasterDirect, FillPathMatchesReferenceAndGeneralRouteOnRandomCurvedPaths) {
         const Polylines lines = balanced_polyline(p, m, tol);
         FloatImage f(w, h);
         Mask direct(w, h), general(w, h);
-        ASSERT_TRUE(r.fill_path(p, m, rule, f.view()).ok());
-        ASSERT_TRUE(r.fill_path(p, m, rule, direct.view()).ok());
-        ASSERT_TRUE(r.fill(lines, rule, general.view()).ok());
+        ASSERT_TRUE(r.fill_path(p, m, f.view(), {rule}).ok());
+        ASSERT_TRUE(r.fill_path(p, m, direct.view(), {rule}).ok());
+        ASSERT_TRUE(r.fill(lines, general.view(), {rule}).ok());
         const std::vector<double> ref = reference_coverage(lines, rule, w, h, {});
         const std::vector<unsigned char> ref8 = reference_u8(lines, rule, w, h, {});
         for (std::size_t i = 0; i < ref.size(); ++i) {
@@ -338,12 +346,12 @@ TEST(RasterDirect, TranslationsDrawTheStoredTransformsCoverageBitForBit) {
         const FillRule rule = trial % 2 ? FillRule::EvenOdd : FillRule::NonZero;
         FloatImage fa(w, h), fb(w, h);
         Mask ma(w, h), mb(w, h), general(w, h);
-        ASSERT_TRUE(r.fill_path(p, moved, rule, fa.view()).ok());
-        ASSERT_TRUE(r.fill_path(p, stored, rule, fb.view()).ok());
-        ASSERT_TRUE(r.fill_path(p, moved, rule, ma.view()).ok());
-        ASSERT_TRUE(r.fill_path(p, stored, rule, mb.view()).ok());
-        ASSERT_TRUE(r.fill(balanced_polyline(p, moved, kDefaultRasterTolerancePx), rule,
-                           general.view()).ok());
+        ASSERT_TRUE(r.fill_path(p, moved, fa.view(), {rule}).ok());
+        ASSERT_TRUE(r.fill_path(p, stored, fb.view(), {rule}).ok());
+        ASSERT_TRUE(r.fill_path(p, moved, ma.view(), {rule}).ok());
+        ASSERT_TRUE(r.fill_path(p, stored, mb.view(), {rule}).ok());
+        ASSERT_TRUE(r.fill(balanced_polyline(p, moved, kDefaultRasterTolerancePx), general.view(),
+                           {rule}).ok());
         for (std::size_t i = 0; i < fa.px.size(); ++i) {
             ASSERT_EQ(fa.px[i], fb.px[i]) << "trial " << trial << " pixel " << i;
             ASSERT_EQ(ma.pixels()[i], mb.pixels()[i]) << "trial " << trial << " pixel " << i;
@@ -372,7 +380,7 @@ TEST(RasterDirect, PathTouchingEveryTargetBorderStaysWithinTheTolerance) {
     Rasterizer r;
     for (FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
         FloatImage f(37, 23);
-        ASSERT_TRUE(r.fill_path(p, Affine::identity(), rule, f.view()).ok());
+        ASSERT_TRUE(r.fill_path(p, Affine::identity(), f.view(), {rule}).ok());
         const std::vector<double> ref =
             reference_coverage(balanced_polyline(p, Affine::identity(), tol), rule, 37, 23, {});
         for (std::size_t i = 0; i < ref.size(); ++i) ASSERT_NEAR(f.px[i], ref[i], tol) << i;
@@ -393,7 +401,7 @@ TEST(RasterDirect, SteepEdgesInsideOneColumnMatchReference) {
     Rasterizer r;
     for (std::size_t c = 0; c < cases.size(); ++c) {
         FloatImage f(200, 41), g(200, 41);
-        ASSERT_TRUE(r.fill(cases[c], FillRule::NonZero, f.view()).ok());
+        ASSERT_TRUE(r.fill(cases[c], f.view(), {FillRule::NonZero}).ok());
         Path p;
         std::size_t start = 0;
         for (std::size_t end : cases[c].contour_ends) {
@@ -402,7 +410,7 @@ TEST(RasterDirect, SteepEdgesInsideOneColumnMatchReference) {
             p.close();
             start = end;
         }
-        ASSERT_TRUE(r.fill_path(p, Affine::identity(), FillRule::NonZero, g.view()).ok());
+        ASSERT_TRUE(r.fill_path(p, Affine::identity(), g.view(), {FillRule::NonZero}).ok());
         const std::vector<double> ref = reference_coverage(cases[c], FillRule::NonZero, 200, 41, {});
         for (std::size_t i = 0; i < ref.size(); ++i) {
             ASSERT_NEAR(f.px[i], ref[i], kFloatTol) << "case " << c << " pixel " << i;
@@ -417,7 +425,7 @@ TEST(RasterClipping, EdgesLeftOfTargetStillContributeCover) {
     // A square from x = −5 to 3.5: the target must show columns 0..2 full and column 3 half.
     Rasterizer r;
     FloatImage f(8, 8);
-    ASSERT_TRUE(r.fill(rect(-5, 1, 3.5, 6), FillRule::NonZero, f.view()).ok());
+    ASSERT_TRUE(r.fill(rect(-5, 1, 3.5, 6), f.view(), {FillRule::NonZero}).ok());
     for (int y = 0; y < 8; ++y) {
         double row = (y >= 1 && y < 6) ? 1.0 : 0.0;
         for (int x = 0; x < 8; ++x) {
@@ -435,8 +443,8 @@ TEST(RasterClipping, WindowOfLargerRenderEqualsRenderOfWindow) {
         FillRule rule = trial % 2 ? FillRule::EvenOdd : FillRule::NonZero;
         FloatImage big(40, 40), win(15, 12);
         int wx = static_cast<int>(rng() % 25), wy = static_cast<int>(rng() % 28);
-        ASSERT_TRUE(r.fill(p, rule, big.view()).ok());
-        ASSERT_TRUE(r.fill(p, rule, win.view(), {-double(wx), -double(wy)}).ok());
+        ASSERT_TRUE(r.fill(p, big.view(), {rule}).ok());
+        ASSERT_TRUE(r.fill(p, win.view(), fill_at(rule, {-double(wx), -double(wy)})).ok());
         for (int y = 0; y < 12; ++y)
             for (int x = 0; x < 15; ++x)
                 ASSERT_NEAR(win.at(x, y), big.at(x + wx, y + wy), kFloatTol) << "trial " << trial;
@@ -448,11 +456,11 @@ TEST(RasterClipping, HugeCoordinatesClipExactlyWithoutOverflow) {
     const double big = std::numeric_limits<double>::max();
     // A rectangle from x = −DBL_MAX to 5.5 equals one from 0 to 5.5 inside the target.
     FloatImage a(10, 10), b(10, 10);
-    ASSERT_TRUE(r.fill(rect(-big, 2, 5.5, 7.25), FillRule::NonZero, a.view()).ok());
-    ASSERT_TRUE(r.fill(rect(0, 2, 5.5, 7.25), FillRule::NonZero, b.view()).ok());
+    ASSERT_TRUE(r.fill(rect(-big, 2, 5.5, 7.25), a.view(), {FillRule::NonZero}).ok());
+    ASSERT_TRUE(r.fill(rect(0, 2, 5.5, 7.25), b.view(), {FillRule::NonZero}).ok());
     for (std::size_t i = 0; i < a.px.size(); ++i) ASSERT_NEAR(a.px[i], b.px[i], kFloatTol);
     // Spanning ±DBL_MAX in both axes: the whole target is covered.
-    ASSERT_TRUE(r.fill(rect(-big, -big, big, big), FillRule::NonZero, a.view()).ok());
+    ASSERT_TRUE(r.fill(rect(-big, -big, big, big), a.view(), {FillRule::NonZero}).ok());
     for (float v : a.px) ASSERT_NEAR(v, 1.0, kFloatTol);
     // Random far-away triangles: never a crash, always coverage in [0, 1].
     std::mt19937 rng(707);
@@ -464,7 +472,7 @@ TEST(RasterClipping, HugeCoordinatesClipExactlyWithoutOverflow) {
             p.points.push_back({sx * std::pow(10.0, expo(rng)), sy * std::pow(10.0, expo(rng))});
         }
         p.contour_ends.push_back(3);
-        ASSERT_TRUE(r.fill(p, FillRule::NonZero, a.view(), {3.5, 4.5}).ok());
+        ASSERT_TRUE(r.fill(p, a.view(), fill_at(FillRule::NonZero, {3.5, 4.5})).ok());
         for (float v : a.px) ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << "trial " << trial;
     }
 }
@@ -477,7 +485,7 @@ TEST(RasterClipping, FarCoordinatesMatchReference) {
     for (int trial = 0; trial < 300; ++trial) {
         Polylines p = polygon({{{far(rng), near(rng)}, {near(rng), far(rng)}, {near(rng), near(rng)}}});
         FloatImage f(20, 20);
-        ASSERT_TRUE(r.fill(p, FillRule::NonZero, f.view()).ok());
+        ASSERT_TRUE(r.fill(p, f.view(), {FillRule::NonZero}).ok());
         std::vector<double> ref = reference_coverage(p, FillRule::NonZero, 20, 20, {});
         for (std::size_t i = 0; i < ref.size(); ++i)
             ASSERT_NEAR(f.px[i], ref[i], 1e-3) << "trial " << trial;  // 1e8 in double: ~1e-8 px
@@ -493,7 +501,7 @@ TEST(RasterClipping, SubnormalEdgeClippedAtTheTopMatchesReference) {
     for (int w : {1, 3}) {
         Polylines p = polygon({{{-2.9149873104633546e-322, -tiny}, {tiny, tiny}, {0.75, 0.9}}});
         FloatImage f(w, 1);
-        ASSERT_TRUE(r.fill(p, FillRule::NonZero, f.view()).ok());
+        ASSERT_TRUE(r.fill(p, f.view(), {FillRule::NonZero}).ok());
         std::vector<double> ref = reference_coverage(p, FillRule::NonZero, w, 1, {});
         for (std::size_t i = 0; i < ref.size(); ++i) {
             ASSERT_TRUE(std::isfinite(f.px[i]));
@@ -510,11 +518,11 @@ TEST(RasterErrors, NanOrInfinityIsAnErrorAndLeavesTargetUntouched) {
         Mask m(5, 5);
         m.at(2, 2) = 77;
         Polylines p = polygon({{{1, 1}, {bad, 3}, {4, 4}}});
-        Status s = r.fill(p, FillRule::NonZero, m.view());
+        Status s = r.fill(p, m.view(), {FillRule::NonZero});
         ASSERT_FALSE(s.ok());
         EXPECT_NE(s.error().message.find("NaN"), std::string::npos) << s.error().message;
         EXPECT_EQ(m.at(2, 2), 77);
-        EXPECT_FALSE(r.fill(rect(1, 1, 2, 2), FillRule::NonZero, m.view(), {bad, 0}).ok());
+        EXPECT_FALSE(r.fill(rect(1, 1, 2, 2), m.view(), fill_at(FillRule::NonZero, {bad, 0})).ok());
         EXPECT_EQ(m.at(2, 2), 77);
     }
 }
@@ -522,20 +530,20 @@ TEST(RasterErrors, NanOrInfinityIsAnErrorAndLeavesTargetUntouched) {
 TEST(RasterErrors, TargetLimitsAndBadContoursAreErrors) {
     Rasterizer r;
     std::uint8_t px[4] = {};
-    EXPECT_FALSE(r.fill(rect(0, 0, 1, 1), FillRule::NonZero,
-                        MaskView{px, kMaxBitmapDim + 1, 1, kMaxBitmapDim + 1}).ok());
-    EXPECT_FALSE(r.fill(rect(0, 0, 1, 1), FillRule::NonZero, MaskView{px, -1, 1, 1}).ok());
-    EXPECT_FALSE(r.fill(rect(0, 0, 1, 1), FillRule::NonZero, MaskView{nullptr, 2, 2, 2}).ok());
+    EXPECT_FALSE(r.fill(rect(0, 0, 1, 1), MaskView{px, kMaxBitmapDim + 1, 1, kMaxBitmapDim + 1},
+                        {FillRule::NonZero}).ok());
+    EXPECT_FALSE(r.fill(rect(0, 0, 1, 1), MaskView{px, -1, 1, 1}, {FillRule::NonZero}).ok());
+    EXPECT_FALSE(r.fill(rect(0, 0, 1, 1), MaskView{nullptr, 2, 2, 2}, {FillRule::NonZero}).ok());
     Polylines bad = rect(0, 0, 1, 1);
     bad.contour_ends = {5};
-    EXPECT_FALSE(r.fill(bad, FillRule::NonZero, MaskView{px, 2, 2, 2}).ok());
+    EXPECT_FALSE(r.fill(bad, MaskView{px, 2, 2, 2}, {FillRule::NonZero}).ok());
     bad.contour_ends = {2};  // two points after the last end
-    EXPECT_FALSE(r.fill(bad, FillRule::NonZero, MaskView{px, 2, 2, 2}).ok());
+    EXPECT_FALSE(r.fill(bad, MaskView{px, 2, 2, 2}, {FillRule::NonZero}).ok());
     // Empty target and empty polylines are fine.
-    EXPECT_TRUE(r.fill(rect(0, 0, 1, 1), FillRule::NonZero, MaskView{nullptr, 0, 0, 0}).ok());
+    EXPECT_TRUE(r.fill(rect(0, 0, 1, 1), MaskView{nullptr, 0, 0, 0}, {FillRule::NonZero}).ok());
     Mask m(3, 3);
     m.at(1, 1) = 9;
-    EXPECT_TRUE(r.fill(Polylines{}, FillRule::NonZero, m.view()).ok());
+    EXPECT_TRUE(r.fill(Polylines{}, m.view(), {FillRule::NonZero}).ok());
     EXPECT_EQ(m.at(1, 1), 0);  // clearing is part of the fill
 }
 
@@ -551,13 +559,14 @@ TEST(RasterErrors, FillPathRefusesAnEdgeBudgetBeyondKMaxEdges) {
     arcs.close();
     Rasterizer r;
     Mask m(16, 16);
-    Status s = r.fill_path(arcs, Affine::scale(1e13), FillRule::NonZero, m.view());
+    Status s = r.fill_path(arcs, Affine::scale(1e13), m.view(), {FillRule::NonZero});
     ASSERT_FALSE(s.ok());
     EXPECT_NE(s.error().message.find("kMaxEdges"), std::string::npos) << s.error().message;
     // Refused before flattening: nothing was allocated for it.
     EXPECT_EQ(r.scratch_capacity_bytes(), 0u);
     // A non-finite transform is an error too.
-    EXPECT_FALSE(r.fill_path(arcs, Affine::scale(std::nan("")), FillRule::NonZero, m.view()).ok());
+    EXPECT_FALSE(
+        r.fill_path(arcs, Affine::scale(std::nan("")), m.view(), {FillRule::NonZero}).ok());
 }
 
 // --- Targets with stride, float output, path filling, steady-state memory -------------------
@@ -569,9 +578,9 @@ TEST(RasterTarget, RendersIntoAtlasSubViewWithoutTouchingNeighbours) {
     Polylines p = polygon({{{1.3, 0.2}, {13.7, 4.1}, {6.2, 11.9}}});
     Rasterizer r;
     MaskView sub = atlas.view().sub(20, 10, 15, 13);
-    ASSERT_TRUE(r.fill(p, FillRule::NonZero, sub).ok());
+    ASSERT_TRUE(r.fill(p, sub, {FillRule::NonZero}).ok());
     Mask alone(15, 13);
-    ASSERT_TRUE(r.fill(p, FillRule::NonZero, alone.view()).ok());
+    ASSERT_TRUE(r.fill(p, alone.view(), {FillRule::NonZero}).ok());
     for (int y = 0; y < 32; ++y) {
         for (int x = 0; x < 64; ++x) {
             bool inside = x >= 20 && x < 35 && y >= 10 && y < 23;
@@ -586,9 +595,9 @@ TEST(RasterTarget, NegativeStrideRendersBottomUpMemory) {
     Rasterizer r;
     // Row 0 of the view is the LAST row of the memory.
     MaskView flipped{&m.at(0, 9), 10, 10, -10};
-    ASSERT_TRUE(r.fill(p, FillRule::NonZero, flipped).ok());
+    ASSERT_TRUE(r.fill(p, flipped, {FillRule::NonZero}).ok());
     Mask direct(10, 10);
-    ASSERT_TRUE(r.fill(p, FillRule::NonZero, direct.view()).ok());
+    ASSERT_TRUE(r.fill(p, direct.view(), {FillRule::NonZero}).ok());
     for (int y = 0; y < 10; ++y)
         for (int x = 0; x < 10; ++x) EXPECT_EQ(m.at(x, 9 - y), direct.at(x, y));
 }
@@ -607,7 +616,7 @@ TEST(RasterTarget, FillPathOfCircleCoversItsArea) {
     Rasterizer r;
     FloatImage img(50, 50);
     Affine m = Affine::translate({25.25, 24.5}) * Affine::scale(20.0);
-    ASSERT_TRUE(r.fill_path(c, m, FillRule::NonZero, img.view()).ok());
+    ASSERT_TRUE(r.fill_path(c, m, img.view(), {FillRule::NonZero}).ok());
     double sum = 0.0;
     for (float v : img.px) sum += v;
     EXPECT_NEAR(sum, M_PI * 400.0, M_PI * 400.0 * 6e-4 + 0.1 * 2 * M_PI * 20.0);
@@ -634,10 +643,11 @@ TEST(RasterTarget, BalancedFlatteningKeepsTheAreaOfAParabolicSegment) {
     };
     Rasterizer r;
     FloatImage balanced(25, 15), plain(25, 15);
-    ASSERT_TRUE(r.fill_path(p, m, FillRule::NonZero, balanced.view(), o).ok());
+    ASSERT_TRUE(
+        r.fill_path(p, m, balanced.view(), {FillRule::NonZero, OverlapMode::Accumulate, o}).ok());
     Polylines lines;
     flatten(p, m, o, lines);
-    ASSERT_TRUE(r.fill(lines, FillRule::NonZero, plain.view()).ok());
+    ASSERT_TRUE(r.fill(lines, plain.view(), {FillRule::NonZero}).ok());
     const double exact = 2.0 / 3.0 * 20.0 * 10.0;
     EXPECT_NEAR(area(plain), exact - exact / 49.0, 1e-3);  // the bias being removed
     EXPECT_LT(std::fabs(area(balanced) - exact), 0.25 * (exact - area(plain)));
@@ -647,12 +657,13 @@ TEST(RasterTarget, ReusedRasterizerStopsGrowingAfterTheLargestFill) {
     std::mt19937 rng(909);
     Rasterizer r;
     Mask big(200, 200);
-    ASSERT_TRUE(r.fill(rect(-1, -1, 201, 201), FillRule::NonZero, big.view()).ok());
+    ASSERT_TRUE(r.fill(rect(-1, -1, 201, 201), big.view(), {FillRule::NonZero}).ok());
     const std::size_t after_first = r.scratch_capacity_bytes();
     for (int trial = 0; trial < 200; ++trial) {
         int w = 1 + static_cast<int>(rng() % 200), h = 1 + static_cast<int>(rng() % 200);
         Mask m(w, h);
-        ASSERT_TRUE(r.fill(random_polygon(rng, 10, -20, 220), FillRule::EvenOdd, m.view()).ok());
+        ASSERT_TRUE(
+            r.fill(random_polygon(rng, 10, -20, 220), m.view(), {FillRule::EvenOdd}).ok());
         ASSERT_EQ(r.scratch_capacity_bytes(), after_first);
     }
 }

@@ -78,8 +78,8 @@ Comparison compare(const Path& source, double width, const StrokeStyle& style_in
     // each pixel (Accumulate would over-darken edge pixels where two pieces' edges meet).
     Mask mask(kSize, kSize);
     Rasterizer raster;
-    auto st = raster.fill_path(*outline, Affine::identity(), FillRule::NonZero,
-                               OverlapMode::Accurate, mask.view());
+    auto st = raster.fill_path(*outline, Affine::identity(), mask.view(),
+                               {FillRule::NonZero, OverlapMode::Accurate});
     EXPECT_TRUE(st.ok());
 
     double h = width / 2;
@@ -139,8 +139,9 @@ TEST(StrokeRender, TightCircleFillsToADisc) {
     ASSERT_TRUE(out.ok());
     std::vector<float> cov(kSize * kSize);
     Rasterizer raster;
-    ASSERT_TRUE(raster.fill_path(*out, Affine::identity(), FillRule::NonZero,
-                                 FloatMaskView{cov.data(), kSize, kSize, kSize}).ok());
+    ASSERT_TRUE(raster.fill_path(*out, Affine::identity(),
+                                 FloatMaskView{cov.data(), kSize, kSize, kSize},
+                                 {FillRule::NonZero}).ok());
     double area = 0;
     for (float v : cov) area += v;
     EXPECT_NEAR(area, kPi * 16 * 16, 0.5);  // ≈ 804.2; the ring formula 2πrw would give 754
@@ -208,8 +209,8 @@ TEST(StrokeRender, GoldenStrokedGlyphDejaVuGAt96Px) {
     int w = static_cast<int>(std::ceil(b.x1) + 2 - x0), h = static_cast<int>(std::ceil(b.y1) + 2 - y0);
     Mask m(w, h);
     Rasterizer raster;
-    ASSERT_TRUE(raster.fill_path(*outline, Affine::translate({-x0, -y0}), FillRule::NonZero,
-                                 OverlapMode::Accurate, m.view()).ok());
+    ASSERT_TRUE(raster.fill_path(*outline, Affine::translate({-x0, -y0}), m.view(),
+                                 {FillRule::NonZero, OverlapMode::Accurate}).ok());
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) m.at(x, y) = static_cast<std::uint8_t>(255 - m.at(x, y));
 

@@ -37,7 +37,7 @@ std::vector<std::uint8_t> render_all(const std::string& file, double size_px, bo
         const int h = static_cast<int>(std::ceil(box.y1) - std::floor(box.y0));
         Mask mask(w, h);
         const Affine at = Affine::translate({-std::floor(box.x0), -std::floor(box.y0)});
-        if (!raster.fill_path(outline->path, at, FillRule::NonZero, mask.view())) return {};
+        if (!raster.fill_path(outline->path, at, mask.view(), {FillRule::NonZero})) return {};
         all.insert(all.end(), mask.pixels().begin(), mask.pixels().end());
     }
     return all;

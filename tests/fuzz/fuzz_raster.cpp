@@ -40,8 +40,11 @@ void fill_both(bezel::Rasterizer& raster, const bezel::Polylines& lines, bezel::
                int w, int h, bezel::Vec2 origin, std::vector<float>& out) {
     std::vector<std::uint8_t> bytes(static_cast<std::size_t>(w) * h, 0xA5);
     out.assign(static_cast<std::size_t>(w) * h, -1.0f);
-    auto s8 = raster.fill(lines, rule, bezel::MaskView{bytes.data(), w, h, w}, origin);
-    auto sf = raster.fill(lines, rule, bezel::FloatMaskView{out.data(), w, h, w}, origin);
+    bezel::FillOptions fill;
+    fill.rule = rule;
+    fill.origin = origin;
+    auto s8 = raster.fill(lines, bezel::MaskView{bytes.data(), w, h, w}, fill);
+    auto sf = raster.fill(lines, bezel::FloatMaskView{out.data(), w, h, w}, fill);
     BEZEL_FUZZ_CHECK(s8.ok() == sf.ok());
     if (!sf) {
         for (std::uint8_t b : bytes) BEZEL_FUZZ_CHECK(b == 0xA5);  // untouched on error
@@ -94,25 +97,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::vector<std::uint8_t> mask(static_cast<std::size_t>(w) * h);
     std::vector<float> fmask(mask.size());
     for (bezel::FillRule rule : {bezel::FillRule::NonZero, bezel::FillRule::EvenOdd}) {
-        (void)raster.fill_path(path, transform, rule, bezel::MaskView{mask.data(), w, h, w}, options);
-        if (raster.fill_path(path, transform, rule, bezel::FloatMaskView{fmask.data(), w, h, w},
-                             options))
+        const bezel::FillOptions fill{rule, bezel::OverlapMode::Accumulate, options};
+        (void)raster.fill_path(path, transform, bezel::MaskView{mask.data(), w, h, w}, fill);
+        if (raster.fill_path(path, transform, bezel::FloatMaskView{fmask.data(), w, h, w}, fill))
             for (float f : fmask) BEZEL_FUZZ_CHECK(f >= 0.0f && f <= 1.0f);
         // The exact overlap pass (its float→byte conversion is where UBSan caught NaN).
-        (void)raster.fill_path(path, transform, rule, bezel::OverlapMode::Accurate,
-                               bezel::MaskView{mask.data(), w, h, w}, options);
+        const bezel::FillOptions accurate{rule, bezel::OverlapMode::Accurate, options};
+        (void)raster.fill_path(path, transform, bezel::MaskView{mask.data(), w, h, w}, accurate);
         std::vector<std::uint8_t> lcd(static_cast<std::size_t>(3 * w) * h);
         for (bezel::LcdOrder order : {bezel::LcdOrder::Rgb, bezel::LcdOrder::Bgr})
             for (bezel::OverlapMode overlap :
-                 {bezel::OverlapMode::Accumulate, bezel::OverlapMode::Accurate})
-                (void)raster.fill_path_lcd(path, transform, rule, order,
-                                           bezel::MaskView{lcd.data(), 3 * w, h, 3 * w}, overlap,
-                                           bezel::kLcdFilterDefault, options);
+                 {bezel::OverlapMode::Accumulate, bezel::OverlapMode::Accurate}) {
+                const bezel::FillOptions lcd_fill{rule, overlap, options, {},
+                                                  bezel::CoverageFormat::Lcd, order};
+                (void)raster.fill_path(path, transform,
+                                       bezel::MaskView{lcd.data(), 3 * w, h, 3 * w}, lcd_fill);
+            }
     }
     // Invalid targets are errors, never writes.
-    BEZEL_FUZZ_CHECK(!raster.fill_path(path, transform, bezel::FillRule::NonZero,
-                                       bezel::MaskView{nullptr, w, h, w}, options));
-    BEZEL_FUZZ_CHECK(!raster.fill_path(path, transform, bezel::FillRule::NonZero,
-                                       bezel::MaskView{mask.data(), -w, h, w}, options));
+    const bezel::FillOptions fill{bezel::FillRule::NonZero, bezel::OverlapMode::Accumulate,
+                                  options};
+    BEZEL_FUZZ_CHECK(!raster.fill_path(path, transform, bezel::MaskView{nullptr, w, h, w}, fill));
+    BEZEL_FUZZ_CHECK(!raster.fill_path(path, transform, bezel::MaskView{mask.data(), -w, h, w},
+                                       fill));
     return 0;
 }

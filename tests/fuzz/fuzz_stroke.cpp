@@ -44,8 +44,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         BEZEL_FUZZ_CHECK(segments(*outline) <= bezel::kMaxStrokeSegments);
         std::vector<std::uint8_t> pixels(32 * 32);
         bezel::Rasterizer raster;
-        (void)raster.fill_path(*outline, bezel::Affine::identity(), bezel::FillRule::NonZero,
-                               bezel::MaskView{pixels.data(), 32, 32, 32});
+        (void)raster.fill_path(*outline, bezel::Affine::identity(),
+                               bezel::MaskView{pixels.data(), 32, 32, 32});  // NonZero
     }
     auto dashed = bezel::dash(path, style.dashes, style.dash_offset);
     if (dashed) BEZEL_FUZZ_CHECK(dashed->is_finite());

@@ -38,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "bezel/diagnostics.hpp"
 #include "bezel/raster.hpp"
 
 #ifdef BEZEL_HAVE_STB
@@ -298,7 +299,7 @@ void render_freetype(FT_Library lib, const Glyph& g, unsigned char* px) {
 std::vector<double> reference_16x(bezel::Rasterizer& r, const Glyph& g) {
     const int W = g.width * 16, H = g.height * 16;
     std::vector<float> big(std::size_t(W) * H);
-    (void)r.fill_path(g.path, bezel::Affine::scale(16.0), bezel::FillRule::NonZero,
+    (void)r.fill_path(g.path, bezel::Affine::scale(16.0),
                       bezel::FloatMaskView{big.data(), W, H, W});
     std::vector<double> out(std::size_t(g.width) * g.height, 0.0);
     for (int y = 0; y < H; ++y)
@@ -378,6 +379,8 @@ int main(int argc, char** argv) {
     bezel::Rasterizer rast;
     bezel::FlattenOptions flat_opts;
     flat_opts.tolerance_px = opt.tolerance_px;
+    bezel::FillOptions fill_opts;  // NonZero
+    fill_opts.flatten = flat_opts;
     std::string json = "{\"kernels\":\"" + std::string(bezel::raster_kernel_name()) + "\",\"results\":[";
     bool first_json = true;
     if (!opt.json) {
@@ -404,8 +407,8 @@ int main(int argc, char** argv) {
                 c_ft = add(contender(glyphs, [&](const Glyph& g) { render_freetype(lib, g, px); }));
             if (opt.runs("bezel"))
                 c_bz = add(contender(glyphs, [&](const Glyph& g) {
-                    (void)rast.fill_path(g.path, bezel::Affine::identity(), bezel::FillRule::NonZero,
-                                         bezel::MaskView{px, g.width, g.height, g.width}, flat_opts);
+                    (void)rast.fill_path(g.path, bezel::Affine::identity(),
+                                         bezel::MaskView{px, g.width, g.height, g.width}, fill_opts);
                 }));
 #ifdef BEZEL_HAVE_STB
             // stb parses its own glyph data; done once per glyph outside the timed loop.
@@ -460,7 +463,7 @@ int main(int argc, char** argv) {
                 std::size_t k = 0, segs = 0;
                 for (const auto& p : flat) segs += p.points.size();
                 double fi = time_ns_per_glyph(glyphs, opt.reps, [&](const Glyph& g) {
-                    (void)rast.fill(flat[k++ % flat.size()], bezel::FillRule::NonZero,
+                    (void)rast.fill(flat[k++ % flat.size()],
                                     bezel::MaskView{px, g.width, g.height, g.width});
                 });
                 std::fprintf(stderr, "  breakdown %s %d px: flatten %.0f ns, fill %.0f ns, %.0f segments/glyph\n",
@@ -473,8 +476,9 @@ int main(int argc, char** argv) {
                     std::vector<double> ref = reference_16x(rast, g);
                     mine.assign(ref.size(), 0);
                     theirs.assign(ref.size(), 0);
-                    (void)rast.fill_path(g.path, bezel::Affine::identity(), bezel::FillRule::NonZero,
-                                         bezel::MaskView{mine.data(), g.width, g.height, g.width}, flat_opts);
+                    (void)rast.fill_path(g.path, bezel::Affine::identity(),
+                                         bezel::MaskView{mine.data(), g.width, g.height, g.width},
+                                         fill_opts);
                     render_freetype(lib, g, theirs.data());
                     for (std::size_t i = 0; i < ref.size(); ++i) {
                         eb.add(std::fabs(mine[i] - ref[i] * 255.0));

@@ -118,7 +118,7 @@ Expected<BenchRow> bench_size(Font& font, double size, int repeat) {
     Status failed = ok_status();
     auto bezel = [&](const Job& j) {
         Status s = raster.fill_path(j.path, Affine::translate({-double(j.x0), -double(j.y0)}),
-                                    FillRule::NonZero, MaskView{pixels.data(), j.w, j.h, j.w});
+                                    MaskView{pixels.data(), j.w, j.h, j.w});
         if (!s) failed = s;
     };
     const OutlineOptions options{size, false};

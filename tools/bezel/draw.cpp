@@ -48,7 +48,7 @@ Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h)
     std::vector<Mask> masks;
     for (const InkLayer& layer : layers) {
         Mask m(w, h);
-        auto st = raster.fill(*layer.shapes, FillRule::NonZero, m.view());
+        auto st = raster.fill(*layer.shapes, m.view());  // NonZero
         if (!st) return st.error();
         masks.push_back(std::move(m));
     }

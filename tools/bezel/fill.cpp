@@ -83,7 +83,7 @@ int run_fill(const FillArgs& args) {
     const FillRule rule = args.fill == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
     const OverlapMode overlap =
         args.overlap == "accurate" ? OverlapMode::Accurate : OverlapMode::Accumulate;
-    if (Status s = raster.fill_path(*path, *transform, rule, overlap, mask.view(), flatten); !s)
+    if (Status s = raster.fill_path(*path, *transform, mask.view(), {rule, overlap, flatten}); !s)
         return fail_runtime("PATH: " + s.error().message);
 
     std::string document;

@@ -68,13 +68,10 @@ Status render_glyph(Rasterizer& raster, const GlyphRenderSettings& settings, Gly
                         static_cast<std::ptrdiff_t>(glyph.width) * bpp};
     const OverlapMode overlap =
         glyph.accurate_overlap ? OverlapMode::Accurate : OverlapMode::Accumulate;
-    Status st = is_lcd(settings.mode)
-                    ? raster.fill_path_lcd(glyph.outline, to_bitmap, settings.rule,
-                                           settings.mode == GlyphMode::LcdBgr ? LcdOrder::Bgr
-                                                                              : LcdOrder::Rgb,
-                                           view, overlap, kLcdFilterDefault, settings.flatten)
-                    : raster.fill_path(glyph.outline, to_bitmap, settings.rule, overlap, view,
-                                       settings.flatten);
+    const FillOptions fill{settings.rule, overlap, settings.flatten, {},
+                           is_lcd(settings.mode) ? CoverageFormat::Lcd : CoverageFormat::Gray,
+                           settings.mode == GlyphMode::LcdBgr ? LcdOrder::Bgr : LcdOrder::Rgb};
+    Status st = raster.fill_path(glyph.outline, to_bitmap, view, fill);
     if (!st) return Error{"glyph " + std::to_string(glyph.gid) + ": " + st.error().message};
     return ok_status();
 }

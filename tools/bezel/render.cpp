@@ -131,8 +131,8 @@ Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
         if (!(x1 > x0 && y1 > y0)) continue;
         coverage = Mask(static_cast<int>(x1 - x0), static_cast<int>(y1 - y0));
         auto filled = rasterizer.fill_path(*stroked, Affine::translate({g.x_px - x0, g.y_px - y0}),
-                                           FillRule::NonZero, OverlapMode::Accurate,
-                                           coverage.view());
+                                           coverage.view(),
+                                           {FillRule::NonZero, OverlapMode::Accurate});
         if (!filled) return filled.error();
         blend_mask(page, coverage.view(), static_cast<int>(x0), static_cast<int>(y0),
                    options.foreground);

@@ -71,8 +71,8 @@ Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& fra
     }
     Mask mask(w, h);
     Rasterizer raster;
-    auto st = raster.fill_path(mapped, to_canvas, FillRule::NonZero, OverlapMode::Accurate,
-                               mask.view());
+    auto st = raster.fill_path(mapped, to_canvas, mask.view(),
+                               {FillRule::NonZero, OverlapMode::Accurate});
     if (!st) return st.error();
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) mask.at(x, y) = static_cast<std::uint8_t>(255 - mask.at(x, y));

@@ -146,14 +146,19 @@ private:
     std::vector<Rgba8> pixels_;
 };
 
+// Order of the subpixels in a display pixel, left to right (an LCD panel's layout). Also the
+// order of the three coverage bytes of a display pixel in an LCD mask.
+enum class LcdOrder : std::uint8_t { Rgb, Bgr };
+
 // Blends `color` through the coverage `mask` onto `image` with the mask's top-left pixel at
 // (x, y) (parts outside the image are clipped), in linear light: for each channel
 // out = enc(lerp(dec(dst), dec(color), coverage·color.a)). Alpha is composited "over".
 void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color);
-// The same for an LCD mask (3 bytes per pixel, `mask.width` = 3 × pixels; bytes R, G, B, or
-// B, G, R when `bgr`): each colour channel uses its own subpixel coverage. Masks from
-// Rasterizer::fill_path_lcd are always R, G, B in memory (for either panel order): pass false.
-void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, bool bgr);
+// The same for an LCD mask (3 bytes per pixel, `mask.width` = 3 × pixels, the bytes of each
+// pixel in `order`: R, G, B or B, G, R): each colour channel uses its own subpixel coverage.
+// Masks from the Rasterizer's CoverageFormat::Lcd are R, G, B in memory for either panel order:
+// pass LcdOrder::Rgb.
+void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, LcdOrder order);
 
 // The same for a gray page (one sRGB-encoded byte per pixel, opaque) and an opaque gray colour:
 // out = enc(lerp(dec(dst), dec(gray), coverage)). Equal, pixel for pixel, to blend_mask on an

@@ -6,9 +6,12 @@
 // approximation is flattening, whose distance bound the caller chooses (`tolerance_px`).
 //
 // Coordinates: pixels, y DOWN. Pixel (x, y) of a target is the square [x, x+1] × [y, y+1]; a
-// polygon point p lands at p + origin in target pixels (a fractional origin positions a glyph
-// at a subpixel offset). Any affine transform goes into the path convenience or into the
-// polylines themselves.
+// point p (of the polylines, or of the path after its transform) lands at p + origin in target
+// pixels (FillOptions::origin; a fractional origin positions a glyph at a subpixel offset).
+//
+// Every fill takes one FillOptions (rule, overlap mode, flattening, origin, coverage format, LCD
+// order and filter); a combination a fill does not implement is an Error naming it, never a
+// silent substitute.
 //
 // Clipping is exact: parts of the fill outside the target are dropped, and edges LEFT of the
 // target still contribute their cover, so a shape that starts left of the target renders inside
@@ -43,16 +46,10 @@ namespace bezel {
 // orientation, the partial pixel is over-counted (clamped at 1) — FreeType's default behaviour.
 enum class FillRule : std::uint8_t { NonZero, EvenOdd };
 
-// Flattening tolerance fill_path uses unless told otherwise: 0.01 px. Why: exact-area coverage
-// leaves flattening as the only geometric error (chords cut inside convex curves, always the same
-// way), and on the test fonts the mean coverage error against the 16×-supersampled reference at
-// 12 px (tools/bench/raster_bench --accuracy) is 1.29/255 at flatten's general default of 1/16 px,
-// 0.70/255 at 0.03, 0.46/255 at 1/64 and 0.25/255 at 0.01 px — the last is 8-bit rounding alone
-// (max 1.7/255). The cost is ~1.75× the segments of 1/16 px (segments grow as 1/√tol).
-// Those figures are for plain chords; fill_path's WangUniform flattening now places vertices so
-// each chord's mean area error is zero (src/raster/render_flatten.hpp), giving 0.19/255 mean at
-// 0.01 px (DejaVu, 12 px, all ASCII). The max (≈ tol·255 in the worst pixel) still pins the
-// tolerance: 0.015 px already reaches 3.1/255 at 96 px.
+// Flattening tolerance of every fill unless told otherwise: 0.01 px. Exact-area coverage leaves
+// flattening as the only geometric error: at 0.01 px the mean coverage error is at the 8-bit
+// rounding floor, and the worst pixel errs by about tol·255 (≈ 2.5/255), which is what keeps the
+// tolerance from growing. The measurements are in docs/perf-log.md.
 inline constexpr double kDefaultRasterTolerancePx = 0.01;
 inline FlattenOptions raster_flatten_defaults() {
     FlattenOptions o;
@@ -72,8 +69,7 @@ inline FlattenOptions raster_flatten_defaults() {
 enum class OverlapMode : std::uint8_t { Accumulate, Accurate };
 
 // --- LCD subpixel rendering ---------------------------------------------------------------------
-// Order of the subpixels in a display pixel, left to right.
-enum class LcdOrder : std::uint8_t { Rgb, Bgr };
+// (LcdOrder, the panel's subpixel order, is declared in image.hpp: blending uses it too.)
 // A 5-tap FIR filter applied horizontally to coverage sampled at 3× horizontal resolution, in
 // 1/256 units (sum 256 for a filter that keeps total coverage).
 struct LcdFilter {
@@ -84,6 +80,37 @@ inline constexpr LcdFilter kLcdFilterDefault{{0x08, 0x4D, 0x56, 0x4D, 0x08}};
 // Extra display pixels an LCD rendering needs on each side of the outline's box: the filter
 // spreads coverage two subpixels out.
 inline constexpr int kLcdPaddingPx = 1;
+
+// What a fill writes into a MaskView.
+//   Gray: one byte per pixel, round(coverage·255).
+//   Lcd:  3 bytes per DISPLAY pixel (FreeType's FT_PIXEL_MODE_LCD layout: `target.width` is 3 ×
+//         the display width, and the bytes of a display pixel are always R, G, B in memory,
+//         whatever the panel's order). The fill is sampled at 3× horizontal resolution (subpixel
+//         k covers display x in [k/3, (k+1)/3]), filtered by FillOptions::lcd_filter, and each
+//         colour takes the subpixel its panel lights: on an Rgb panel R is the left third, on a
+//         Bgr panel the right third (the Bgr bytes are the Rgb bytes reversed within each pixel).
+enum class CoverageFormat : std::uint8_t { Gray, Lcd };
+
+// Every choice a fill makes. Each default is the plain fill: NonZero, Accumulate, flattening at
+// kDefaultRasterTolerancePx with WangUniform, no origin shift, gray coverage.
+struct FillOptions {
+    FillRule rule = FillRule::NonZero;
+    // Accurate is implemented for fill_path (either target type); fill of polylines is Accumulate
+    // only.
+    OverlapMode overlap = OverlapMode::Accumulate;
+    // How fill_path flattens curves, in target pixels after the transform. fill ignores it (its
+    // polylines are already flat).
+    FlattenOptions flatten = raster_flatten_defaults();
+    // Added to every point after the transform, in target pixels (y down): a polyline point p
+    // lands at p + origin, a fractional origin places the fill at a subpixel offset. For
+    // fill_path it is exactly the transform with origin added to its translation (the same
+    // bits); in Lcd format it is in display pixels. Must be finite.
+    Vec2 origin{};
+    // Lcd is implemented for fill_path into a MaskView only.
+    CoverageFormat format = CoverageFormat::Gray;
+    LcdOrder lcd_order = LcdOrder::Rgb;         // Lcd only: the panel's subpixel order
+    LcdFilter lcd_filter = kLcdFilterDefault;   // Lcd only
+};
 
 // --- Gamma / contrast ---------------------------------------------------------------------------
 // Coverage from the rasterizer is LINEAR (area fraction). A compositor that blends in a non-linear
@@ -101,80 +128,72 @@ private:
     std::array<std::uint8_t, 256> table_{};
 };
 
-namespace raster_detail {
-struct FeatureScratch;  // src/raster/overlap.hpp: scratch of the LCD and accurate-overlap fills
-void release(FeatureScratch* scratch);
-}  // namespace raster_detail
-
-// The SIMD level of the coverage sweep chosen for this CPU at run time: "avx2" or "sse2".
-const char* raster_kernel_name();
-
 class Rasterizer {
 public:
-    Rasterizer() = default;
+    Rasterizer();
+    ~Rasterizer();
     Rasterizer(const Rasterizer&) = delete;             // scratch memory is not shared by accident
     Rasterizer& operator=(const Rasterizer&) = delete;
-    Rasterizer(Rasterizer&&) noexcept = default;
-    Rasterizer& operator=(Rasterizer&&) noexcept = default;
+    Rasterizer(Rasterizer&&) noexcept;
+    Rasterizer& operator=(Rasterizer&&) noexcept;
 
-    // Fills the closed polygons `lines` (each contour closed implicitly) into `target`, writing
-    // EVERY pixel of the target (0 where nothing covers it: clearing is part of the call), as
-    // 8-bit alpha round(coverage·255). Errors, each leaving the target unchanged: a target
-    // dimension negative or > kMaxBitmapDim, a null target with nonzero size, more than
-    // kMaxEdges segments, contour_ends inconsistent with points, a NaN or infinite point or
-    // origin. Allocates nothing once its scratch has grown to the largest target used.
-    Status fill(const Polylines& lines, FillRule rule, const MaskView& target, Vec2 origin = {});
-    // The same, writing float coverage in [0, 1] (not quantized).
-    Status fill(const Polylines& lines, FillRule rule, const FloatMaskView& target,
-                Vec2 origin = {});
+    // Fills the closed polygons `lines` (each contour closed implicitly), moved by
+    // `options.origin`, into `target` with `options.rule`, writing EVERY pixel of the target (0
+    // where nothing covers it: clearing is part of the call): 8-bit alpha round(coverage·255)
+    // into a MaskView, coverage in [0, 1] (not quantized) into a FloatMaskView.
+    // Errors, each leaving the target unchanged: an option this fill does not implement
+    // (OverlapMode::Accurate or CoverageFormat::Lcd, named in the message), a target dimension
+    // negative or > kMaxBitmapDim, a null target with nonzero size, more than kMaxEdges
+    // segments, contour_ends inconsistent with points, a NaN or infinite point or origin.
+    // Allocates nothing once its scratch has grown to the largest target used.
+    Status fill(const Polylines& lines, const MaskView& target, const FillOptions& options = {});
+    Status fill(const Polylines& lines, const FloatMaskView& target,
+                const FillOptions& options = {});
 
-    // Flattens `path` mapped by `transform` (to target pixels) with `flatten_options` into a
-    // reused internal Polylines, then fills it as above. For FlattenMethod::WangUniform the
-    // vertices are error-balanced (same step count and distance bound, zero mean area error per
-    // chord), so the polyline differs from flatten()'s. When the path's pixel box is narrow (at
-    // most 93 px wide: glyphs at text sizes), those vertices are rounded to float relative to
-    // the box before they are drawn, which moves each by at most 2⁻²⁴ of the box's larger side
-    // (under 4e-6 px in a box under 64 px) and a pixel's coverage by no more. Errors as above,
-    // plus a transform that is not finite, and a path that would flatten to more than kMaxEdges
-    // segments (estimated by Wang's bound before flattening, so nothing is allocated for it).
-    Status fill_path(const Path& path, const Affine& transform, FillRule rule,
-                     const MaskView& target,
-                     const FlattenOptions& flatten_options = raster_flatten_defaults());
-    Status fill_path(const Path& path, const Affine& transform, FillRule rule,
-                     const FloatMaskView& target,
-                     const FlattenOptions& flatten_options = raster_flatten_defaults());
-
-    // fill_path with a choice of overlap handling (OverlapMode::Accumulate is fill_path).
-    Status fill_path(const Path& path, const Affine& transform, FillRule rule,
-                     OverlapMode overlap, const MaskView& target,
-                     const FlattenOptions& flatten_options = raster_flatten_defaults());
-
-    // LCD subpixel coverage: the path (mapped by `transform` to DISPLAY pixels) is sampled at 3×
-    // horizontal resolution, filtered by `filter`, and written as 3 bytes per display pixel in
-    // `order`: `target.width` is 3 × the display width (FreeType's FT_PIXEL_MODE_LCD layout).
-    // The caller leaves kLcdPaddingPx display pixels of room on each side of the outline. Errors
-    // as fill_path, plus a target width that is not a multiple of 3.
-    Status fill_path_lcd(const Path& path, const Affine& transform, FillRule rule, LcdOrder order,
-                         const MaskView& target, OverlapMode overlap = OverlapMode::Accumulate,
-                         const LcdFilter& filter = kLcdFilterDefault,
-                         const FlattenOptions& flatten_options = raster_flatten_defaults());
+    // Flattens `path` mapped by `transform` (to target pixels; then moved by `options.origin`)
+    // with `options.flatten` into a reused internal Polylines, then fills it as above, in
+    // `options.format` with `options.overlap`. For FlattenMethod::WangUniform the vertices are
+    // error-balanced (same step count and distance bound, zero mean area error per chord), so the
+    // polyline differs from flatten()'s. When the path's pixel box is narrow (at most 93 px
+    // wide: glyphs at text sizes), those vertices are rounded to float relative to the box before
+    // they are drawn, which moves each by at most 2⁻²⁴ of the box's larger side (under 4e-6 px in
+    // a box under 64 px) and a pixel's coverage by no more.
+    // CoverageFormat::Lcd: `transform` maps to DISPLAY pixels and the caller leaves
+    // kLcdPaddingPx display pixels of room on each side of the outline.
+    // Errors, each leaving the target unchanged: CoverageFormat::Lcd into a FloatMaskView (not
+    // implemented, named in the message), a target or origin fill would refuse, a transform that
+    // is not finite, a path point that is not finite or beyond kMaxFlattenCoordinatePx after it,
+    // a path that would flatten to more than kMaxEdges segments (estimated by Wang's bound before
+    // flattening, so nothing is allocated for it), and in Lcd format a target width that is not
+    // a multiple of 3.
+    // Allocates nothing once its scratch has grown to the largest target and path used.
+    Status fill_path(const Path& path, const Affine& transform, const MaskView& target,
+                     const FillOptions& options = {});
+    Status fill_path(const Path& path, const Affine& transform, const FloatMaskView& target,
+                     const FillOptions& options = {});
 
     // Bytes of scratch memory currently held (for tests of the no-allocation promise).
     std::size_t scratch_capacity_bytes() const;
 
 private:
+    struct FeatureScratch;  // LCD and accurate-overlap scratch (src/raster/overlap.hpp)
+
     template <typename View>
     Status fill_impl(const Polylines& lines, FillRule rule, const View& target, Vec2 origin);
     template <typename View>
     Status fill_path_impl(const Path& path, const Affine& transform, FillRule rule,
                           const View& target, const FlattenOptions& flatten_options);
+    template <typename View>
+    Status fill_path_gray(const Path& path, const Affine& transform, const View& target,
+                          const FillOptions& options);
+    Status fill_path_lcd(const Path& path, const Affine& transform, const MaskView& target,
+                         const FillOptions& options);
+    FeatureScratch& features();
 
     std::vector<float> acc_;            // per-band cell deltas; all zero between calls
     std::vector<std::uint8_t> flags_;   // per-band "block has deltas" marks; all zero between calls
-    Polylines flattened_;      // fill_path's reused polylines
-    // LCD and accurate-overlap scratch (lcd.cpp, overlap.cpp), made on their first use.
-    std::unique_ptr<raster_detail::FeatureScratch, void (*)(raster_detail::FeatureScratch*)>
-        features_{nullptr, &raster_detail::release};
+    Polylines flattened_;               // fill_path's reused polylines
+    std::unique_ptr<FeatureScratch> features_;  // made on first use
 };
 
 }  // namespace bezel

@@ -164,12 +164,13 @@ void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8
     }
 }
 
-void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, bool bgr) {
+void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, LcdOrder order) {
     Clip c = clip(image.width(), image.height(), mask.width / 3, mask.height, x, y);
     if (c.empty() || color.a == 0) return;
     const SrgbTables& t = srgb_tables();
     const float src[3] = {t.decode[color.r], t.decode[color.g], t.decode[color.b]};
     const float color_a = color.a / 255.0f;
+    const bool bgr = order == LcdOrder::Bgr;
     const int r_at = bgr ? 2 : 0, b_at = bgr ? 0 : 2;
     for (int my = c.y0; my < c.y1; ++my) {
         const std::uint8_t* m = mask.row(my);

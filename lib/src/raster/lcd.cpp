@@ -1,5 +1,5 @@
-// Rasterizer::fill_path_lcd: coverage sampled at 3× horizontal resolution, then FreeType's 5-tap
-// FIR filter across subpixels.
+// Rasterizer::fill_path in CoverageFormat::Lcd: coverage sampled at 3× horizontal resolution,
+// then FreeType's 5-tap FIR filter across subpixels.
 //
 // Sampling: subpixel k of the output covers display x in [k/3, (k+1)/3], i.e. the path mapped by
 // scale(3, 1)·transform, rasterized exactly (float coverage, no 8-bit rounding before the filter).
@@ -12,9 +12,9 @@
 // kLcdPaddingPx display pixels from the target's sides.
 //
 // Order: the bytes of a display pixel are always R, G, B in memory (FreeType's FT_PIXEL_MODE_LCD
-// layout); `order` is the PANEL's subpixel order. On an RGB panel red lights the left third, so R
-// takes subpixel 3p; on a BGR panel red is the right third, so R takes subpixel 3p + 2 — the Bgr
-// output is the Rgb output reversed within each pixel.
+// layout); FillOptions::lcd_order is the PANEL's subpixel order. On an RGB panel red lights the
+// left third, so R takes subpixel 3p; on a BGR panel red is the right third, so R takes subpixel
+// 3p + 2 — the Bgr output is the Rgb output reversed within each pixel.
 //
 // Memory: the float samples are processed in bands of at most kMaxBandCells floats (the path is
 // re-flattened per band, which only tall targets need), so scratch stays bounded.
@@ -48,9 +48,8 @@ void filter_row(const float* samples, int width, const LcdFilter& f, LcdOrder or
 
 }  // namespace
 
-Status Rasterizer::fill_path_lcd(const Path& path, const Affine& transform, FillRule rule,
-                                 LcdOrder order, const MaskView& target, OverlapMode overlap,
-                                 const LcdFilter& filter, const FlattenOptions& flatten_options) {
+Status Rasterizer::fill_path_lcd(const Path& path, const Affine& transform,
+                                 const MaskView& target, const FillOptions& options) {
     const int W = target.width, H = target.height;
     const int samples_w = W + 2 * kFilterReach;
     if (W < 0 || H < 0 || samples_w > kMaxBitmapDim || H > kMaxBitmapDim)
@@ -63,9 +62,9 @@ Status Rasterizer::fill_path_lcd(const Path& path, const Affine& transform, Fill
     if (target.data == nullptr && W > 0 && H > 0)
         return Error{"LCD target " + std::to_string(W) + "x" + std::to_string(H) +
                      " has no pixel memory (null data)"};
-    if (!transform.is_finite()) return Error{"fill_path_lcd: transform is not finite"};
-    if (!features_) features_.reset(new raster_detail::FeatureScratch);
-    std::vector<float>& samples = features_->lcd_samples;
+    if (!transform.is_finite()) return Error{"fill_path (LCD): transform is not finite"};
+    FeatureScratch& scratch = features();
+    std::vector<float>& samples = scratch.lcd_samples;
 
     const int band_rows = std::max(
         1, std::min(H, static_cast<int>(kMaxBandCells / static_cast<std::size_t>(samples_w))));
@@ -77,12 +76,9 @@ Status Rasterizer::fill_path_lcd(const Path& path, const Affine& transform, Fill
         const FloatMaskView band{samples.data(), samples_w, rows, samples_w};
         const Affine m = Affine::translate({double(kFilterReach), -double(y0)}) * to_samples;
         // The first band's fill checks the path; a later band only moves the rows.
-        if (Status st = fill_path(path, m, rule, band, flatten_options); !st) return st;
-        if (overlap == OverlapMode::Accurate)
-            raster_detail::fill_region_exact(path, m, rule, flatten_options, band,
-                                             features_->overlap);
+        if (Status st = fill_path_gray(path, m, band, options); !st) return st;
         for (int r = 0; r < rows; ++r)
-            filter_row(band.row(r), W, filter, order, target.row(y0 + r));
+            filter_row(band.row(r), W, options.lcd_filter, options.lcd_order, target.row(y0 + r));
     }
     return ok_status();
 }

@@ -14,8 +14,6 @@ namespace bezel {
 
 namespace raster_detail {
 
-void release(FeatureScratch* scratch) { delete scratch; }
-
 namespace {
 
 // The same flattening fill_path uses (path_fill.cpp), so that on outlines without overlaps the
@@ -217,18 +215,5 @@ template void fill_region_exact<FloatMaskView>(const Path&, const Affine&, FillR
                                                OverlapScratch&);
 
 }  // namespace raster_detail
-
-Status Rasterizer::fill_path(const Path& path, const Affine& transform, FillRule rule,
-                             OverlapMode overlap, const MaskView& target,
-                             const FlattenOptions& flatten_options) {
-    // The plain fill checks every input, bounds the edges, and writes every pixel; the exact
-    // pass then rewrites the rows it covers.
-    if (Status st = fill_path(path, transform, rule, target, flatten_options); !st) return st;
-    if (overlap == OverlapMode::Accumulate) return ok_status();
-    if (!features_) features_.reset(new raster_detail::FeatureScratch);
-    raster_detail::fill_region_exact(path, transform, rule, flatten_options, target,
-                                     features_->overlap);
-    return ok_status();
-}
 
 }  // namespace bezel

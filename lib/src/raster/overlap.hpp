@@ -74,11 +74,6 @@ struct OverlapScratch {
     std::vector<double> cells;          // the current row's area deltas (width + 2)
 };
 
-struct FeatureScratch {
-    OverlapScratch overlap;
-    std::vector<float> lcd_samples;  // 3× horizontal float coverage, lcd.cpp
-};
-
 // Flattens `path` exactly as Rasterizer::fill_path does and writes the region's exact coverage
 // into `target` (every row that the work bound allows; the others are left as they are).
 // Precondition: the same fill_path call (same path, transform, options, target size) has just
@@ -88,3 +83,13 @@ void fill_region_exact(const Path& path, const Affine& transform, FillRule rule,
                        const FlattenOptions& options, const View& target, OverlapScratch& s);
 
 }  // namespace bezel::raster_detail
+
+namespace bezel {
+
+// The Rasterizer's scratch for the LCD and accurate-overlap fills, made on their first use.
+struct Rasterizer::FeatureScratch {
+    raster_detail::OverlapScratch overlap;
+    std::vector<float> lcd_samples;  // 3× horizontal float coverage, lcd.cpp
+};
+
+}  // namespace bezel

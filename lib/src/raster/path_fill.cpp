@@ -1,4 +1,5 @@
-// Rasterizer::fill_path: flatten into reused polylines, then fill. The only new concern here is
+// Rasterizer::fill_path: the options are dispatched (origin, coverage format, overlap mode), the
+// path is flattened into reused polylines and filled. The only new concern of the plain route is
 // the edge budget: a path under a huge scale would flatten into millions of segments, so the
 // count is bounded BEFORE flattening allocates anything.
 #include <algorithm>
@@ -7,6 +8,7 @@
 
 #include "bezel/raster.hpp"
 #include "raster/direct_fill.hpp"
+#include "raster/overlap.hpp"
 #include "raster/render_flatten.hpp"
 
 namespace bezel {
@@ -104,14 +106,56 @@ Status Rasterizer::fill_path_impl(const Path& path, const Affine& transform, Fil
     return fill_impl(flattened_, rule, target, Vec2{});
 }
 
-Status Rasterizer::fill_path(const Path& path, const Affine& transform, FillRule rule,
-                             const MaskView& target, const FlattenOptions& flatten_options) {
-    return fill_path_impl(path, transform, rule, target, flatten_options);
+// Gray (or float) coverage with the chosen overlap handling. The plain fill checks every input,
+// bounds the edges and writes every pixel; for OverlapMode::Accurate the exact pass then
+// rewrites the rows it covers.
+template <typename View>
+Status Rasterizer::fill_path_gray(const Path& path, const Affine& transform, const View& target,
+                                  const FillOptions& options) {
+    if (Status st = fill_path_impl(path, transform, options.rule, target, options.flatten); !st)
+        return st;
+    if (options.overlap == OverlapMode::Accumulate) return ok_status();
+    raster_detail::fill_region_exact(path, transform, options.rule, options.flatten, target,
+                                     features().overlap);
+    return ok_status();
 }
 
-Status Rasterizer::fill_path(const Path& path, const Affine& transform, FillRule rule,
-                             const FloatMaskView& target, const FlattenOptions& flatten_options) {
-    return fill_path_impl(path, transform, rule, target, flatten_options);
+// lcd.cpp samples through this.
+template Status Rasterizer::fill_path_gray<FloatMaskView>(const Path&, const Affine&,
+                                                          const FloatMaskView&, const FillOptions&);
+
+namespace {
+
+// The origin folded into the transform's translation, so a path filled with an origin gives the
+// bits of the same path under the moved transform. A zero origin leaves the transform as it is.
+Affine moved_by(const Affine& transform, Vec2 origin) {
+    Affine m = transform;
+    if (origin.x != 0.0 || origin.y != 0.0) {
+        m.e += origin.x;
+        m.f += origin.y;
+    }
+    return m;
+}
+
+constexpr char kOriginNotFinite[] = "raster origin is not finite (NaN or infinity)";
+
+}  // namespace
+
+Status Rasterizer::fill_path(const Path& path, const Affine& transform, const MaskView& target,
+                             const FillOptions& options) {
+    if (!options.origin.is_finite()) return Error{kOriginNotFinite};
+    const Affine m = moved_by(transform, options.origin);
+    if (options.format == CoverageFormat::Lcd) return fill_path_lcd(path, m, target, options);
+    return fill_path_gray(path, m, target, options);
+}
+
+Status Rasterizer::fill_path(const Path& path, const Affine& transform,
+                             const FloatMaskView& target, const FillOptions& options) {
+    if (options.format != CoverageFormat::Gray)
+        return Error{"fill_path: CoverageFormat::Lcd is not implemented for a float target (LCD "
+                     "coverage is written as bytes into a MaskView)"};
+    if (!options.origin.is_finite()) return Error{kOriginNotFinite};
+    return fill_path_gray(path, moved_by(transform, options.origin), target, options);
 }
 
 }  // namespace bezel

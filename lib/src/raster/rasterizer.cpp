@@ -17,6 +17,7 @@
 #include "bezel/raster.hpp"
 #include "raster/accumulate.hpp"
 #include "raster/fill_common.hpp"
+#include "raster/overlap.hpp"
 #include "raster/sweep.hpp"
 
 namespace bezel {
@@ -161,17 +162,43 @@ template Status Rasterizer::fill_impl<MaskView>(const Polylines&, FillRule, cons
 template Status Rasterizer::fill_impl<FloatMaskView>(const Polylines&, FillRule,
                                                      const FloatMaskView&, Vec2);
 
-Status Rasterizer::fill(const Polylines& lines, FillRule rule, const MaskView& target,
-                        Vec2 origin) {
-    return fill_impl(lines, rule, target, origin);
+// Out of line: FeatureScratch is complete only here (overlap.hpp).
+Rasterizer::Rasterizer() = default;
+Rasterizer::~Rasterizer() = default;
+Rasterizer::Rasterizer(Rasterizer&&) noexcept = default;
+Rasterizer& Rasterizer::operator=(Rasterizer&&) noexcept = default;
+
+Rasterizer::FeatureScratch& Rasterizer::features() {
+    if (!features_) features_ = std::make_unique<FeatureScratch>();
+    return *features_;
 }
 
-Status Rasterizer::fill(const Polylines& lines, FillRule rule, const FloatMaskView& target,
-                        Vec2 origin) {
-    return fill_impl(lines, rule, target, origin);
+namespace {
+
+// What fill (polylines) does not implement, named; null when the options are fine.
+const char* unsupported_for_polylines(const FillOptions& options) {
+    if (options.overlap != OverlapMode::Accumulate)
+        return "fill: OverlapMode::Accurate is not implemented for polylines (fill_path resolves "
+               "overlaps)";
+    if (options.format != CoverageFormat::Gray)
+        return "fill: CoverageFormat::Lcd is not implemented for polylines (fill_path into a "
+               "MaskView renders LCD coverage)";
+    return nullptr;
 }
 
-const char* raster_kernel_name() { return rd::best_kernels().name; }
+}  // namespace
+
+Status Rasterizer::fill(const Polylines& lines, const MaskView& target,
+                        const FillOptions& options) {
+    if (const char* why = unsupported_for_polylines(options)) return Error{why};
+    return fill_impl(lines, options.rule, target, options.origin);
+}
+
+Status Rasterizer::fill(const Polylines& lines, const FloatMaskView& target,
+                        const FillOptions& options) {
+    if (const char* why = unsupported_for_polylines(options)) return Error{why};
+    return fill_impl(lines, options.rule, target, options.origin);
+}
 
 std::size_t Rasterizer::scratch_capacity_bytes() const {
     return acc_.capacity() * sizeof(float) + flags_.capacity() +

@@ -93,9 +93,9 @@ Expected<Image> render_solid(const TriangleMesh& mesh, const View& view, const S
         tri.points = {pa, pb, pc};
         tri.contour_ends = {3};
         MaskView target{cover.data(), bw, bh, bw};
-        if (auto ok = rasterizer.fill(tri, FillRule::NonZero, target, Vec2{-double(x0), -double(y0)});
-            !ok)
-            return ok.error();
+        FillOptions fill;  // NonZero
+        fill.origin = Vec2{-double(x0), -double(y0)};
+        if (auto ok = rasterizer.fill(tri, target, fill); !ok) return ok.error();
 
         // Two-sided lighting: the facet and its vertex normals turned towards the viewer.
         const Vec3 wa = mesh.positions[t[0]], wb = mesh.positions[t[1]], wc = mesh.positions[t[2]];

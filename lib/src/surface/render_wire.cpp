@@ -94,8 +94,8 @@ Expected<Image> render_wireframe(const std::vector<Patch>& patches, const View& 
     const int W = view.width(), H = view.height();
     std::vector<std::uint8_t> cover(static_cast<std::size_t>(W) * static_cast<std::size_t>(H));
     Rasterizer rasterizer;
-    if (auto ok = rasterizer.fill_path(*outline, Affine::identity(), FillRule::NonZero,
-                                       MaskView{cover.data(), W, H, W});
+    if (auto ok =
+            rasterizer.fill_path(*outline, Affine::identity(), MaskView{cover.data(), W, H, W});
         !ok)
         return Error{"wireframe: " + ok.error().message};
     surface_detail::Framebuffer fb(W, H);

@@ -83,13 +83,10 @@ Expected<GlyphBox> GlyphRasterizer::render(GlyphId gid, const GlyphRenderOptions
     FlattenOptions flatten = raster_flatten_defaults();
     flatten.tolerance_px = options.tolerance_px;
     MaskView glyph = target.sub(0, 0, box->width * bytes_per_px, box->height);
-    Status filled = is_lcd(options.mode)
-                        ? raster_.fill_path_lcd(outline_.path, to_bitmap, options.rule,
-                                                options.mode == RenderMode::LcdBgr ? LcdOrder::Bgr
-                                                                                   : LcdOrder::Rgb,
-                                                glyph, overlap, kLcdFilterDefault, flatten)
-                        : raster_.fill_path(outline_.path, to_bitmap, options.rule, overlap, glyph,
-                                            flatten);
+    const FillOptions fill{options.rule, overlap, flatten, {},
+                           is_lcd(options.mode) ? CoverageFormat::Lcd : CoverageFormat::Gray,
+                           options.mode == RenderMode::LcdBgr ? LcdOrder::Bgr : LcdOrder::Rgb};
+    Status filled = raster_.fill_path(outline_.path, to_bitmap, glyph, fill);
     if (!filled) return Error{"glyph " + std::to_string(gid) + ": " + filled.error().message};
     return box;
 }

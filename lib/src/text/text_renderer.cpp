@@ -162,9 +162,9 @@ Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOpti
             if (options.mode == RenderMode::Gray)
                 blend_mask(onto, mask, x, y, options.foreground);
             else
-                // fill_path_lcd already stores R, G, B coverage per pixel whatever the panel's
-                // order (a BGR panel's samples are reversed there), so the bytes are RGB here.
-                blend_lcd_mask(onto, mask, x, y, options.foreground, /*bgr=*/false);
+                // LCD coverage is stored R, G, B per pixel whatever the panel's order (a BGR
+                // panel's samples are reversed by the fill), so the bytes are RGB here.
+                blend_lcd_mask(onto, mask, x, y, options.foreground, LcdOrder::Rgb);
         });
     if (!drawn) return drawn.error();
     return out;
