@@ -5,7 +5,7 @@
 // preallocated A8 target of the glyph's box (clearing included on both sides):
 //   bezel     Rasterizer::fill_path (flattening at kDefaultRasterTolerancePx + fill, which
 //             writes every pixel);
-//   freetype  Font::render_with_freetype: memset + FT_Outline_Render(FT_RASTER_FLAG_AA). Its
+//   freetype  render_with_freetype (bezel/diagnostics.hpp): memset + FT_Outline_Render(FT_RASTER_FLAG_AA). Its
 //             outline is cached by the Font after the first call for a glyph, so each glyph is
 //             rendered once untimed and then `inner` times timed, and bezel the same way.
 // Per size: ns/glyph = min over --repeat runs of (Σ over glyphs of the timed calls) /
@@ -23,6 +23,7 @@
 #include <memory>
 #include <sstream>
 
+#include "bezel/diagnostics.hpp"
 #include "bezel/font.hpp"
 #include "bezel/raster.hpp"
 #include "cli_common.hpp"
@@ -123,8 +124,8 @@ Expected<BenchRow> bench_size(Font& font, double size, int repeat) {
     };
     const OutlineOptions options{size, false};
     auto freetype = [&](const Job& j) {
-        Status s = font.render_with_freetype(j.gid, options, MaskView{pixels.data(), j.w, j.h, j.w},
-                                             {-double(j.x0), -double(j.y0)});
+        Status s = render_with_freetype(font, j.gid, options, MaskView{pixels.data(), j.w, j.h, j.w},
+                                        {-double(j.x0), -double(j.y0)});
         if (!s) failed = s;
     };
     // Calls per glyph so that one run takes ≥ kMinRunNs for the faster of the two.
