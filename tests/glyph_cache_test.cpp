@@ -51,7 +51,7 @@ TEST(GlyphCache, RepeatedStringMissesOncePerGlyphAndBin) {
         double pen = 0;
         for (char32_t c : text) {
             double frac = pen - static_cast<int>(pen);
-            o.subpixel_x = frac;
+            o.offset_px.x = frac;
             distinct.insert({f.gid(c), static_cast<int>(frac * kSubpixelBins)});
             ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(c), o));
             pen += 7.3;
@@ -63,7 +63,7 @@ TEST(GlyphCache, RepeatedStringMissesOncePerGlyphAndBin) {
     EXPECT_EQ(s.entries, distinct.size());
     EXPECT_EQ(s.evictions, 0u);
     // The font id, size and mode are part of the key.
-    o.subpixel_x = 0;
+    o.offset_px.x = 0;
     ASSERT_TRUE(cache.get(f.rasterizer, 2, f.gid(U'h'), o));
     o.size_px = 17;
     ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(U'h'), o));
@@ -72,12 +72,40 @@ TEST(GlyphCache, RepeatedStringMissesOncePerGlyphAndBin) {
     EXPECT_EQ(cache.stats().misses, distinct.size() + 3);
 }
 
+TEST(GlyphCache, HintingBoxModeAndFlatteningAreInTheKey) {
+    // Each option that changes the pixels misses once, and what the cache returns equals a
+    // direct render with the same options.
+    Fixture f;
+    GlyphCache cache;
+    GlyphRenderOptions o;
+    o.size_px = 13;
+    const GlyphId g = f.gid(U'g');
+    std::vector<GlyphRenderOptions> variants(4, o);
+    variants[1].hinting = true;
+    variants[2].box = GlyphBoxMode::FreeType;
+    variants[3].flatten_method = FlattenMethod::ParabolaIntegral;
+    for (std::size_t i = 0; i < variants.size(); ++i) {
+        auto cached = cache.get(f.rasterizer, 1, g, variants[i]);
+        ASSERT_TRUE(cached) << cached.error().message;
+        EXPECT_EQ(cache.stats().misses, i + 1);
+        auto box = f.rasterizer.measure(g, variants[i]);
+        ASSERT_TRUE(box);
+        Mask direct(box->width, box->height);
+        ASSERT_TRUE(f.rasterizer.render(g, variants[i], direct.view()));
+        EXPECT_EQ((**cached).box.left, box->left) << i;
+        EXPECT_EQ((**cached).box.top, box->top) << i;
+        EXPECT_EQ(to_mask((**cached).mask), direct) << i;
+    }
+    for (const GlyphRenderOptions& v : variants) ASSERT_TRUE(cache.get(f.rasterizer, 1, g, v));
+    EXPECT_EQ(cache.stats().misses, variants.size());
+}
+
 TEST(GlyphCache, SubpixelOffsetsShareFourBins) {
     Fixture f;
     GlyphCache cache;
     GlyphRenderOptions o;
     for (double sx : {0.0, 0.1, 0.24, 0.25, 0.49, 0.5, 0.74, 0.75, 0.99}) {
-        o.subpixel_x = sx;
+        o.offset_px.x = sx;
         ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(U'x'), o));
     }
     EXPECT_EQ(cache.stats().misses, 4u);
@@ -91,10 +119,10 @@ TEST(GlyphCache, BitmapEqualsADirectRenderAtTheBinOffset) {
         GlyphRenderOptions o;
         o.size_px = 21;
         o.mode = mode;
-        o.subpixel_x = 0.6;   // bin 2: rendered at +0.5
+        o.offset_px.x = 0.6;   // bin 2: rendered at +0.5
         auto cached = cache.get(f.rasterizer, 1, f.gid(U'&'), o);
         ASSERT_TRUE(cached) << cached.error().message;
-        o.subpixel_x = 0.5;
+        o.offset_px.x = 0.5;
         auto box = f.rasterizer.measure(f.gid(U'&'), o);
         ASSERT_TRUE(box);
         int bpp = mode == RenderMode::Gray ? 1 : 3;

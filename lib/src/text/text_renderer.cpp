@@ -115,7 +115,7 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     auto look_up = [&](const PlacedGlyph& g, int& x, int& y) -> Expected<const CachedGlyph*> {
         const double quarters = std::floor(g.x_px * kSubpixelBins + 0.5);
         const double column = std::floor(quarters / kSubpixelBins);
-        glyph.subpixel_x = (quarters - column * kSubpixelBins) / kSubpixelBins;
+        glyph.offset_px.x = (quarters - column * kSubpixelBins) / kSubpixelBins;
         const double row = std::floor(g.y_px + 0.5);
         if (std::fabs(column) > kMaxImageDim * 2.0 || std::fabs(row) > kMaxImageDim * 2.0)
             return nullptr;
