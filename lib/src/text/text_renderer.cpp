@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -82,8 +81,7 @@ GlyphCache& TextRenderer::cache() { return impl_->cache; }
 // RGBA and the gray page.
 template <typename Page, typename MakePage, typename Blend>
 Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& options, Page& page,
-                          MakePage&& make_page, Blend&& blend,
-                          const std::function<void(int rows)>* rows_final) {
+                          MakePage&& make_page, Blend&& blend, PageRowsSink* rows_sink) {
     Impl& r = *impl_;
     if (!same_variations(options.shape.variations, r.variations)) {
         if (auto set = r.font.set_variations(options.shape.variations); !set) {
@@ -130,7 +128,7 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     const std::vector<PlacedGlyph>& glyphs = layout->glyphs;
     // first_row[i]: the top row of glyphs i.. (page_h when none reaches the page).
     std::vector<int> first_row;
-    if (rows_final != nullptr) {
+    if (rows_sink != nullptr) {
         first_row.assign(glyphs.size() + 1, page_h);
         for (std::size_t i = glyphs.size(); i-- > 0;) {
             int x = 0, y = page_h;
@@ -145,12 +143,12 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
         auto c = look_up(glyphs[i], x, y);
         if (!c) return c.error();
         if (*c != nullptr) blend(page, (*c)->mask, x, y);
-        if (rows_final != nullptr && first_row[i + 1] > reported) {
+        if (rows_sink != nullptr && first_row[i + 1] > reported) {
             reported = first_row[i + 1];
-            (*rows_final)(reported);
+            rows_sink->rows_final(reported);
         }
     }
-    if (rows_final != nullptr) (*rows_final)(page_h);
+    if (rows_sink != nullptr) rows_sink->rows_final(page_h);
     return ok_status();
 }
 
@@ -172,13 +170,18 @@ Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOpti
 
 Expected<Mask> TextRenderer::render_gray(std::string_view utf8, const TextRenderOptions& options) {
     Mask out;
-    auto drawn = render_gray(utf8, options, out, {});
+    auto drawn = draw_gray(utf8, options, out, nullptr);
     if (!drawn) return drawn.error();
     return out;
 }
 
-Status TextRenderer::render_gray(std::string_view utf8, const TextRenderOptions& options,
-                                 Mask& page, const std::function<void(int rows)>& rows_final) {
+Status TextRenderer::render_gray_streaming(std::string_view utf8, const TextRenderOptions& options,
+                                           Mask& page, PageRowsSink& rows_sink) {
+    return draw_gray(utf8, options, page, &rows_sink);
+}
+
+Status TextRenderer::draw_gray(std::string_view utf8, const TextRenderOptions& options, Mask& page,
+                               PageRowsSink* rows_sink) {
     const Rgba8 fg = options.foreground, bg = options.background;
     if (options.mode != RenderMode::Gray)
         return Error{"render_gray: needs RenderMode::Gray (LCD coverage is per channel)"};
@@ -195,7 +198,7 @@ Status TextRenderer::render_gray(std::string_view utf8, const TextRenderOptions&
         [&](Mask& onto, ConstMaskView mask, int x, int y) {
             blend_mask_gray(onto.view(), mask, x, y, fg.r);
         },
-        rows_final ? &rows_final : nullptr);
+        rows_sink);
 }
 
 }  // namespace bezel
