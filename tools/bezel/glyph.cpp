@@ -29,10 +29,10 @@ const std::string kGlyphCommand = "bezel glyph";
 
 // -O wins; else the -o file's extension; else ASCII on stdout.
 Expected<GlyphFormat> pick_format(const GlyphArgs& args) {
-    auto name = pick_picture_format(args.format, args.output_file,
-                                    {{".txt", "ascii"}, {".json", "json"}, {".png", "png"},
-                                     {".pgm", "pgm"}, {".ppm", "pgm"}},
-                                    "ascii");
+    auto name = pick_output_format(args.format, args.output_file,
+                                   {{".txt", "ascii"}, {".json", "json"}, {".png", "png"},
+                                    {".pgm", "pgm"}, {".ppm", "pgm"}},
+                                   "ascii");
     if (!name) return name.error();
     if (*name == "ascii") return GlyphFormat::Ascii;
     if (*name == "json") return GlyphFormat::Json;

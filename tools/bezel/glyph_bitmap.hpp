@@ -20,12 +20,6 @@ namespace CLI { class App; }
 namespace bezel::cli {
 
 // Shared by `bezel glyph` and `bezel fill` (glyph_options.cpp).
-// The output format: `format_option` when given, else the one `extensions` maps the -o file's
-// extension to (".png" → "png", …, case-insensitive), else `fallback` (stdout). An unknown
-// extension is an error naming the file and the extensions known.
-Expected<std::string> pick_picture_format(
-    const std::string& format_option, const std::string& output_file,
-    const std::vector<std::pair<std::string, std::string>>& extensions, const std::string& fallback);
 // -o, --fill and --tolerance, bound to the given variables.
 void add_picture_options(CLI::App& cmd, std::string& output_file, std::string& fill,
                          double& tolerance_px);

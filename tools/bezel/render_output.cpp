@@ -4,9 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdlib>
-#include <filesystem>
 #include <optional>
 #include <thread>
 
@@ -34,20 +32,15 @@ struct PngBands final : PageRowsSink {
 
 Expected<PageFormat> pick_page_format(const std::string& format_option,
                                       const std::string& output_file, bool stdout_is_terminal) {
-    std::string name = format_option;
-    if (name.empty() && !output_file.empty() && output_file != "-") {
-        std::string ext = std::filesystem::path(output_file).extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(),
-                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        if (ext == ".png") name = "png";
-        else if (ext == ".pgm") name = "pgm";
-        else if (ext == ".ppm") name = "ppm";
-        else if (ext == ".ans" || ext == ".ansi") name = "ansi";
-        else
-            return Error{output_file + ": cannot tell the output format from the extension '" + ext +
-                         "' (use .png, .pgm, .ppm or .ans, or give -O)"};
-    }
-    if (name.empty()) return stdout_is_terminal ? PageFormat::Ansi : PageFormat::Png;
+    auto picked = pick_output_format(format_option, output_file,
+                                     {{".png", "png"},
+                                      {".pgm", "pgm"},
+                                      {".ppm", "ppm"},
+                                      {".ans", "ansi"},
+                                      {".ansi", "ansi", false}},
+                                     stdout_is_terminal ? "ansi" : "png");
+    if (!picked) return picked.error();
+    const std::string& name = *picked;
     if (name == "png") return PageFormat::Png;
     if (name == "pgm") return PageFormat::Pgm;
     if (name == "ppm") return PageFormat::Ppm;
