@@ -361,8 +361,8 @@ TEST_F(GlyphCli, ErrorsNameTheirInput) {
     EXPECT_FALSE(std::filesystem::exists(scratch().path() / "a.bmp"));
 }
 
-// render_with_freetype (bezel/diagnostics.hpp: what `bezel bench` times for FreeType) is FreeType's own render:
-// the same pixels as FT_Render_Glyph in FreeType's box, for any stride.
+// render_with_freetype (bezel/diagnostics.hpp: what `bezel bench` times for FreeType) is
+// FreeType's own render: the same pixels as FT_Render_Glyph in FreeType's box, for any stride.
 TEST(RenderWithFreeType, EqualsFtRenderGlyphForAnyStride) {
     auto font = bezel::Font::open(kDejaVu);
     ASSERT_TRUE(font.ok());

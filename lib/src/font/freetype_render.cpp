@@ -1,5 +1,5 @@
-// render_with_freetype (bezel/diagnostics.hpp): FreeType's smooth rasterizer on the unhinted outline, for
-// comparisons and benchmarks (`bezel bench`).
+// render_with_freetype (bezel/diagnostics.hpp): FreeType's smooth rasterizer on the unhinted
+// outline, for comparisons and benchmarks (`bezel bench`).
 //
 // It does what tools/bench/raster_bench.cpp times for FreeType: the glyph loaded at the size
 // with FT_LOAD_NO_HINTING (FreeType scales to 26.6, rounding every point to 1/64 px), translated
