@@ -6,7 +6,8 @@
 //
 // Threading: a GlyphRasterizer or GlyphCache holds scratch memory (and the rasterizer borrows a
 // Font); one object must not be used from two threads at once. Steady state allocates nothing per
-// glyph: buffers are reused and the cache is bounded.
+// glyph: cache hits reuse their buffers and the cache is bounded (a miss, like every prepare(),
+// allocates the outline it loads).
 #pragma once
 
 #include <cstddef>
