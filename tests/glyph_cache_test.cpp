@@ -51,7 +51,7 @@ TEST(GlyphCache, RepeatedStringMissesOncePerGlyphAndBin) {
         double pen = 0;
         for (char32_t c : text) {
             double frac = pen - static_cast<int>(pen);
-            o.subpixel_x = frac;
+            o.offset_px.x = frac;
             distinct.insert({f.gid(c), static_cast<int>(frac * kSubpixelBins)});
             ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(c), o));
             pen += 7.3;
@@ -63,13 +63,47 @@ TEST(GlyphCache, RepeatedStringMissesOncePerGlyphAndBin) {
     EXPECT_EQ(s.entries, distinct.size());
     EXPECT_EQ(s.evictions, 0u);
     // The font id, size and mode are part of the key.
-    o.subpixel_x = 0;
+    o.offset_px.x = 0;
     ASSERT_TRUE(cache.get(f.rasterizer, 2, f.gid(U'h'), o));
     o.size_px = 17;
     ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(U'h'), o));
-    o.mode = RenderMode::LcdRgb;
+    o.fill.format = CoverageFormat::Lcd;
     ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(U'h'), o));
     EXPECT_EQ(cache.stats().misses, distinct.size() + 3);
+}
+
+TEST(GlyphCache, HintingBoxModeFlatteningAndLcdSettingsAreInTheKey) {
+    // Each option that changes the pixels misses once, and what the cache returns equals a
+    // direct render with the same options.
+    Fixture f;
+    GlyphCache cache;
+    GlyphRenderOptions o;
+    o.size_px = 13;
+    const GlyphId g = f.gid(U'g');
+    std::vector<GlyphRenderOptions> variants(7, o);
+    variants[1].hinting = true;
+    variants[2].box = GlyphBoxMode::FreeType;
+    variants[3].fill.flatten.method = FlattenMethod::ParabolaIntegral;
+    variants[4].fill.format = CoverageFormat::Lcd;
+    variants[5].fill.format = CoverageFormat::Lcd;
+    variants[5].fill.lcd_order = LcdOrder::Bgr;
+    variants[6].fill.format = CoverageFormat::Lcd;
+    variants[6].fill.lcd_filter = {{0, 0, 0xFF, 0, 0}};   // no filtering (sum 255)
+    for (std::size_t i = 0; i < variants.size(); ++i) {
+        auto cached = cache.get(f.rasterizer, 1, g, variants[i]);
+        ASSERT_TRUE(cached) << cached.error().message;
+        EXPECT_EQ(cache.stats().misses, i + 1);
+        auto box = f.rasterizer.measure(g, variants[i]);
+        ASSERT_TRUE(box);
+        const int bpp = variants[i].fill.format == CoverageFormat::Lcd ? 3 : 1;
+        Mask direct(box->width * bpp, box->height);
+        ASSERT_TRUE(f.rasterizer.render(g, variants[i], direct.view()));
+        EXPECT_EQ((**cached).box.left, box->left) << i;
+        EXPECT_EQ((**cached).box.top, box->top) << i;
+        EXPECT_EQ(to_mask((**cached).mask), direct) << i;
+    }
+    for (const GlyphRenderOptions& v : variants) ASSERT_TRUE(cache.get(f.rasterizer, 1, g, v));
+    EXPECT_EQ(cache.stats().misses, variants.size());
 }
 
 TEST(GlyphCache, SubpixelOffsetsShareFourBins) {
@@ -77,7 +111,7 @@ TEST(GlyphCache, SubpixelOffsetsShareFourBins) {
     GlyphCache cache;
     GlyphRenderOptions o;
     for (double sx : {0.0, 0.1, 0.24, 0.25, 0.49, 0.5, 0.74, 0.75, 0.99}) {
-        o.subpixel_x = sx;
+        o.offset_px.x = sx;
         ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(U'x'), o));
     }
     EXPECT_EQ(cache.stats().misses, 4u);
@@ -87,17 +121,18 @@ TEST(GlyphCache, SubpixelOffsetsShareFourBins) {
 TEST(GlyphCache, BitmapEqualsADirectRenderAtTheBinOffset) {
     Fixture f;
     GlyphCache cache;
-    for (RenderMode mode : {RenderMode::Gray, RenderMode::LcdBgr}) {
+    for (CoverageFormat format : {CoverageFormat::Gray, CoverageFormat::Lcd}) {
         GlyphRenderOptions o;
         o.size_px = 21;
-        o.mode = mode;
-        o.subpixel_x = 0.6;   // bin 2: rendered at +0.5
+        o.fill.format = format;
+        o.fill.lcd_order = LcdOrder::Bgr;
+        o.offset_px.x = 0.6;   // bin 2: rendered at +0.5
         auto cached = cache.get(f.rasterizer, 1, f.gid(U'&'), o);
         ASSERT_TRUE(cached) << cached.error().message;
-        o.subpixel_x = 0.5;
+        o.offset_px.x = 0.5;
         auto box = f.rasterizer.measure(f.gid(U'&'), o);
         ASSERT_TRUE(box);
-        int bpp = mode == RenderMode::Gray ? 1 : 3;
+        int bpp = format == CoverageFormat::Gray ? 1 : 3;
         Mask direct(box->width * bpp, box->height);
         ASSERT_TRUE(f.rasterizer.render(f.gid(U'&'), o, direct.view()));
         const CachedGlyph& g = **cached;

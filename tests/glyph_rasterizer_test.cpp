@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bezel/freetype_reference.hpp"
 #include "bezel/text.hpp"
 
 namespace bezel {
@@ -47,6 +48,78 @@ TEST(GlyphRasterizer, BoxMatchesFreeTypeBitmapLeftTop) {
                                              {'W', 0, 17, 24, 17}});
 }
 
+TEST(GlyphRasterizer, FreeTypeBoxHoldsTheTightBoxAndTheSameInk) {
+    // The control box holds the curves, so the FreeType box holds the tight one, up to FreeType's
+    // rounding of both to 1/64 px (a tight edge a hair past a pixel boundary can fall inside it
+    // in 26.6). Where it holds it, the ink drawn in either is the same (the glyph at its pen,
+    // whatever the box): pixel (i, j) of the tight box is pixel (i + dl, j + dt) of the other.
+    int larger = 0, compared = 0, glyphs = 0;
+    for (const std::string& file : {kCantarell, kDejaVu}) {
+        auto font = Font::open(file);
+        ASSERT_TRUE(font);
+        GlyphRasterizer rasterizer(*font);
+        for (GlyphId gid = 0; gid < font->glyph_count(); gid += 2) {
+            for (CoverageFormat format : {CoverageFormat::Gray, CoverageFormat::Lcd}) {
+                GlyphRenderOptions tight;
+                tight.size_px = 37;
+                tight.offset_px = {0.3, 0.6};
+                tight.fill.format = format;
+                GlyphRenderOptions ft = tight;
+                ft.box = GlyphBoxMode::FreeType;
+                auto t = rasterizer.measure(gid, tight);
+                auto f = rasterizer.measure(gid, ft);
+                ASSERT_TRUE(t && f);
+                if (t->width == 0) continue;
+                ++glyphs;
+                EXPECT_LE(f->left, t->left + 1) << gid;
+                EXPECT_GE(f->top, t->top - 1) << gid;
+                EXPECT_GE(f->left + f->width, t->left + t->width - 1) << gid;
+                EXPECT_GE(f->height - f->top, t->height - t->top - 1) << gid;
+                const bool holds = f->left <= t->left && f->top >= t->top &&
+                                   f->left + f->width >= t->left + t->width &&
+                                   f->height - f->top >= t->height - t->top;
+                if (!holds) continue;
+                ++compared;
+                larger += f->width * f->height > t->width * t->height;
+                const int bpp = format == CoverageFormat::Gray ? 1 : 3;
+                Mask tm(t->width * bpp, t->height), fm(f->width * bpp, f->height);
+                ASSERT_TRUE(rasterizer.render(gid, tight, tm.view()));
+                ASSERT_TRUE(rasterizer.render(gid, ft, fm.view()));
+                const int dx = (t->left - f->left) * bpp, dy = f->top - t->top;
+                EXPECT_EQ(tm, to_mask(fm.view().sub(dx, dy, tm.width(), tm.height()))) << gid;
+            }
+        }
+    }
+    EXPECT_GT(compared, glyphs * 9 / 10);
+    EXPECT_GT(larger, 0);   // the two conventions do differ on some glyphs
+}
+
+TEST(GlyphRasterizer, WholePixelOffsetMovesTheBoxNotThePixels) {
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    GlyphRasterizer rasterizer(*font);
+    const GlyphId gid = *font->glyph_for_char(U'&');
+    for (GlyphBoxMode box_mode : {GlyphBoxMode::Tight, GlyphBoxMode::FreeType}) {
+        GlyphRenderOptions a;
+        a.size_px = 19;
+        a.box = box_mode;
+        a.offset_px = {0.25, 0.5};
+        GlyphRenderOptions b = a;
+        b.offset_px = {-6.75, 3.5};   // 7 px left, 3 px down
+        auto pa = rasterizer.prepare(gid, a);
+        auto pb = rasterizer.prepare(gid, b);
+        ASSERT_TRUE(pa && pb);
+        EXPECT_EQ(pb->box.left, pa->box.left - 7);
+        EXPECT_EQ(pb->box.top, pa->box.top - 3);
+        EXPECT_EQ(pb->box.width, pa->box.width);
+        EXPECT_EQ(pb->box.height, pa->box.height);
+        Mask ma(pa->box.width, pa->box.height), mb(pb->box.width, pb->box.height);
+        ASSERT_TRUE(rasterizer.draw(*pa, ma.view()));
+        ASSERT_TRUE(rasterizer.draw(*pb, mb.view()));
+        EXPECT_EQ(ma, mb);
+    }
+}
+
 // Max and mean |a − b| over a box.
 struct Diff {
     int max = 0;
@@ -77,13 +150,13 @@ TEST(GlyphRasterizer, PixelsAgreeWithFreeTypeAtTheSameBox) {
         for (double sx : {0.0, 0.25, 0.5, 0.75}) {
             GlyphRenderOptions o;
             o.size_px = 24;
-            o.subpixel_x = sx;
+            o.offset_px.x = sx;
             GlyphId gid = *font->glyph_for_char(ch);
             auto box = rasterizer.measure(gid, o);
             ASSERT_TRUE(box);
             Mask ours(box->width, box->height), theirs(box->width, box->height);
             ASSERT_TRUE(rasterizer.render(gid, o, ours.view()));
-            ASSERT_TRUE(font->render_with_freetype(gid, {24, false}, theirs.view(),
+            ASSERT_TRUE(render_with_freetype(*font, gid, {24, false}, theirs.view(),
                                                    {sx - box->left, static_cast<double>(box->top)}));
             Diff d = diff(ours.view(), theirs.view());
             EXPECT_LE(d.max, 20) << char(ch) << " at +" << sx;
@@ -143,7 +216,7 @@ TEST(GlyphRasterizer, SubpixelOffsetMovesInkNotArea) {
     std::vector<double> centroids;
     long area0 = -1;
     for (double sx : {0.0, 0.25, 0.5, 0.75}) {
-        o.subpixel_x = sx;
+        o.offset_px.x = sx;
         auto box = rasterizer.measure(gid, o);
         ASSERT_TRUE(box);
         Mask m(box->width, box->height);
@@ -170,7 +243,7 @@ TEST(GlyphRasterizer, LcdBoxIsPaddedAndKeepsTheInk) {
     GlyphRenderOptions gray;
     gray.size_px = 18;
     GlyphRenderOptions lcd = gray;
-    lcd.mode = RenderMode::LcdRgb;
+    lcd.fill.format = CoverageFormat::Lcd;
     auto g = rasterizer.measure(gid, gray);
     auto l = rasterizer.measure(gid, lcd);
     ASSERT_TRUE(g && l);
@@ -205,13 +278,13 @@ TEST(GlyphRasterizer, RefusesBadInput) {
     GlyphRasterizer rasterizer(*font);
     GlyphId gid = *font->glyph_for_char(U'g');
     GlyphRenderOptions o;
-    for (double bad : {1.0, -0.1, std::nan("")}) {
-        o.subpixel_x = bad;
+    for (double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL, 2 * kMaxGlyphOffsetPx}) {
+        o.offset_px.x = bad;
         auto box = rasterizer.measure(gid, o);
         ASSERT_FALSE(box);
         EXPECT_NE(box.error().message.find("glyph " + std::to_string(gid)), std::string::npos);
     }
-    o.subpixel_x = 0;
+    o.offset_px.x = 0;
     std::uint8_t small[4] = {};
     auto box = rasterizer.render(gid, o, MaskView{small, 2, 2, 2});
     ASSERT_FALSE(box);

@@ -111,6 +111,19 @@ TEST(Limits, FontSizeAbovekMaxFontSizePxIsAnError) {
     EXPECT_TRUE(font->outline(g, {kMaxFontSizePx, false}));
 }
 
+TEST(Limits, GlyphOffsetBeyondkMaxGlyphOffsetPxIsAnError) {
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    GlyphRasterizer rasterizer(*font);
+    const GlyphId g = font->glyph_for_char(U'g').value();
+    GlyphRenderOptions o;
+    o.box = GlyphBoxMode::FreeType;
+    o.offset_px = {0, -2 * kMaxGlyphOffsetPx};
+    expect_error(rasterizer.measure(g, o), "kMaxGlyphOffsetPx");
+    o.offset_px = {-kMaxGlyphOffsetPx, kMaxGlyphOffsetPx};
+    EXPECT_TRUE(rasterizer.measure(g, o));
+}
+
 TEST(Limits, FaceIndexAbovekMaxFaceIndexIsAnError) {
     expect_error(Font::open(kDejaVu, kMaxFaceIndex + 1), std::to_string(kMaxFaceIndex));
     expect_error(Font::open(kDejaVu, 1), "DejaVuSans.ttf");  // in range, but no such face

@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "bezel/text.hpp"
@@ -23,6 +24,18 @@ namespace {
 
 const std::string kDejaVu = BEZEL_FONTS_DIR "/dejavu-sans/DejaVuSans.ttf";
 const std::string kCantarell = BEZEL_FONTS_DIR "/cantarell/Cantarell-Regular.otf";
+
+// A PageRowsSink that hands each call to `f`.
+template <typename F>
+struct SinkOf final : PageRowsSink {
+    explicit SinkOf(F g) : f(std::move(g)) {}
+    void rows_final(int rows) override { f(rows); }
+    F f;
+};
+template <typename F>
+SinkOf<F> sink_of(F f) {
+    return SinkOf<F>(std::move(f));
+}
 constexpr int kGoldenTolerance = 2;
 
 Mask luma_of(const Image& image) {
@@ -122,7 +135,7 @@ TEST(TextRenderer, LcdModeHasColourFringesAndTheSameInk) {
     ASSERT_TRUE(r);
     TextRenderOptions o = line_options(16);
     auto gray = r->render("olive", o);
-    o.mode = RenderMode::LcdRgb;
+    o.format = CoverageFormat::Lcd;
     auto lcd = r->render("olive", o);
     ASSERT_TRUE(gray && lcd) << (lcd ? "" : lcd.error().message);
     ASSERT_EQ(gray->width(), lcd->width());
@@ -191,10 +204,10 @@ TEST(TextRenderer, GrayPageIsTheRgbaPagesChannelByteForByte) {
     o.background = {255, 255, 255, 128};
     EXPECT_FALSE(r->render_gray(text, o));
     o = line_options(12);
-    o.mode = RenderMode::LcdRgb;
+    o.format = CoverageFormat::Lcd;
     auto lcd = r->render_gray(text, o);
     ASSERT_FALSE(lcd);
-    EXPECT_NE(lcd.error().message.find("RenderMode::Gray"), std::string::npos);
+    EXPECT_NE(lcd.error().message.find("CoverageFormat::Gray"), std::string::npos);
 }
 
 TEST(TextRenderer, RowsDeclaredFinalAreNeverWrittenAgain) {
@@ -212,13 +225,14 @@ TEST(TextRenderer, RowsDeclaredFinalAreNeverWrittenAgain) {
     Mask page;
     std::vector<int> calls;
     std::vector<std::uint8_t> at_call(whole->pixels().size());  // each row as it was when final
-    auto drawn = r->render_gray(text, o, page, [&](int rows) {
+    auto record = sink_of([&](int rows) {
         const int from = calls.empty() ? 0 : calls.back();
         calls.push_back(rows);
         for (int y = std::max(0, from); y < rows; ++y)
             std::copy(page.view().row(y), page.view().row(y) + page.width(),
                       at_call.begin() + static_cast<std::ptrdiff_t>(y) * page.width());
     });
+    auto drawn = r->render_gray_streaming(text, o, page, record);
     ASSERT_TRUE(drawn) << drawn.error().message;
     EXPECT_EQ(page, *whole);
     ASSERT_GT(calls.size(), 20u);  // one per line or so: the rows are handed on early
@@ -230,7 +244,8 @@ TEST(TextRenderer, RowsDeclaredFinalAreNeverWrittenAgain) {
     // A refused size fails before any row is drawn: no call.
     calls.clear();
     o.shape.size_px = -1;
-    EXPECT_FALSE(r->render_gray(text, o, page, [&](int rows) { calls.push_back(rows); }));
+    auto count = sink_of([&](int rows) { calls.push_back(rows); });
+    EXPECT_FALSE(r->render_gray_streaming(text, o, page, count));
     EXPECT_TRUE(calls.empty());
 }
 
@@ -244,10 +259,11 @@ TEST(TextRenderer, PageDeflatedOnWorkerThreadsWhileDrawnDecodesToThePage) {
     const TextRenderOptions o = line_options(16);
     Mask page;
     std::optional<PngGrayStream> png;
-    auto drawn = r->render_gray(text, o, page, [&](int rows) {
+    auto deflate = sink_of([&](int rows) {
         if (!png) png.emplace(page.view(), 2);
         png->rows_final(rows);
     });
+    auto drawn = r->render_gray_streaming(text, o, page, deflate);
     ASSERT_TRUE(drawn) << drawn.error().message;
     ASSERT_TRUE(png.has_value());
     auto bytes = png->finish();

@@ -38,7 +38,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     options.layout.margin_px = in.byte() < 240 ? in.byte() % 8 : in.number();
     options.layout.line_height = in.byte() < 240 ? 0 : in.number();
     options.layout.align = static_cast<bezel::Align>(in.byte() % 3);
-    options.mode = static_cast<bezel::RenderMode>(in.byte() % 3);
+    const int coverage = in.byte() % 3;   // gray, LCD RGB, LCD BGR
+    options.format = coverage == 0 ? bezel::CoverageFormat::Gray : bezel::CoverageFormat::Lcd;
+    options.lcd_order = coverage == 2 ? bezel::LcdOrder::Bgr : bezel::LcdOrder::Rgb;
     const std::string text = in.rest(512);
 
     const bool valid_utf8 = bezel::decode_utf8(text).ok();

@@ -5,16 +5,11 @@
 // and the time per glyph. A second table sweeps the tolerance for the bounded methods, the data
 // behind kDefaultFlattenTolerancePx.
 //
-// Glyphs are loaded with FreeType directly (FT_LOAD_NO_SCALE, FT_Outline_Decompose) into bezel
-// Paths in font units, y flipped to point down; the flatten transform scales them to pixels, so
-// the tolerance is in pixels. Timing: the whole font flattened into one reused Polylines, best of
+// Glyphs come from the font module (Font::outline at size = units per em: bezel Paths in font
+// units, y down); the flatten transform scales them to pixels, so the tolerance is in pixels. Timing: the whole font flattened into one reused Polylines, best of
 // five runs, divided by the glyph count (so it includes the walk over lines and moves).
 //
 // Usage: bench_flatten [tolerance_px]   (default: kDefaultFlattenTolerancePx)
-#include <ft2build.h>
-#include FT_FREETYPE_H
-#include FT_OUTLINE_H
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -24,6 +19,7 @@
 #include <vector>
 
 #include "bezel/flatten.hpp"
+#include "bezel/font.hpp"
 
 namespace {
 
@@ -42,36 +38,21 @@ struct Font {
     std::vector<Path> glyphs;
 };
 
-Point to_point(const FT_Vector* v) { return {static_cast<double>(v->x), -static_cast<double>(v->y)}; }
-int move_to(const FT_Vector* to, void* user) { static_cast<Path*>(user)->move_to(to_point(to)); return 0; }
-int line_to(const FT_Vector* to, void* user) { static_cast<Path*>(user)->line_to(to_point(to)); return 0; }
-int conic_to(const FT_Vector* c, const FT_Vector* to, void* user) {
-    static_cast<Path*>(user)->quad_to(to_point(c), to_point(to));
-    return 0;
-}
-int cubic_to(const FT_Vector* c1, const FT_Vector* c2, const FT_Vector* to, void* user) {
-    static_cast<Path*>(user)->cubic_to(to_point(c1), to_point(c2), to_point(to));
-    return 0;
-}
-
-bool load_font(FT_Library lib, const std::string& file, const std::string& label, Font& font) {
-    FT_Face face = nullptr;
-    if (FT_New_Face(lib, file.c_str(), 0, &face) != 0) {
-        std::fprintf(stderr, "%s: cannot open\n", file.c_str());
+// The font's glyphs through the font module: Font::outline at size_px = units_per_em scales by
+// exactly 1, so the paths are in font units (y down, every contour closed).
+bool load_font(const std::string& file, const std::string& label, Font& font) {
+    auto opened = bezel::Font::open(file);
+    if (!opened) {
+        std::fprintf(stderr, "%s\n", opened.error().message.c_str());
         return false;
     }
     font.label = label;
-    font.units_per_em = face->units_per_EM;
-    FT_Outline_Funcs funcs{move_to, line_to, conic_to, cubic_to, 0, 0};
-    for (FT_Long gid = 0; gid < face->num_glyphs; ++gid) {
-        if (FT_Load_Glyph(face, static_cast<FT_UInt>(gid), FT_LOAD_NO_SCALE) != 0) continue;
-        if (face->glyph->format != FT_GLYPH_FORMAT_OUTLINE) continue;
-        Path path;
-        FT_Outline_Decompose(&face->glyph->outline, &funcs, &path);
-        // FT_Outline_Decompose leaves contours open; the filler closes them.
-        if (!path.empty()) font.glyphs.push_back(std::move(path));
+    font.units_per_em = opened->metrics().units_per_em;
+    for (bezel::GlyphId gid = 0; gid < opened->glyph_count(); ++gid) {
+        auto outline = opened->outline(gid, {font.units_per_em, false});
+        if (!outline) continue;
+        if (!outline->path.empty()) font.glyphs.push_back(std::move(outline->path));
     }
-    FT_Done_Face(face);
     return true;
 }
 
@@ -198,15 +179,12 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: bench_flatten [tolerance_px > 0]\n");
         return 2;
     }
-    FT_Library lib = nullptr;
-    if (FT_Init_FreeType(&lib) != 0) return 1;
     std::vector<Font> fonts(2);
     const std::string dir = BEZEL_FONTS_DIR;
-    if (!load_font(lib, dir + "/dejavu-sans/DejaVuSans.ttf", "DejaVu Sans", fonts[0]) ||
-        !load_font(lib, dir + "/cantarell/Cantarell-Regular.otf", "Cantarell", fonts[1])) {
+    if (!load_font(dir + "/dejavu-sans/DejaVuSans.ttf", "DejaVu Sans", fonts[0]) ||
+        !load_font(dir + "/cantarell/Cantarell-Regular.otf", "Cantarell", fonts[1])) {
         return 1;
     }
-    FT_Done_FreeType(lib);
 
     const FlattenMethod methods[] = {FlattenMethod::ClassicFlatness, FlattenMethod::DistanceSubdivision,
                                      FlattenMethod::WangUniform, FlattenMethod::ParabolaIntegral};

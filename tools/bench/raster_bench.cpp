@@ -5,12 +5,15 @@
 //                [--accuracy] [--breakdown] [--tolerance PX] [--only freetype|bezel|stb|agg]
 //                [--inner N]   (N passes per rep instead of ≥ 20 ms: for callgrind counts)
 //
-// What is timed, per glyph, with the outline already loaded and converted outside the loop:
+// What is timed, per glyph, with the outline already loaded and converted outside the loop (bezel's
+// from the font module, Font::outline via GlyphRasterizer::prepare; FreeType's its own FT_Outline),
+// into the glyph's FreeType box (GlyphBoxMode::FreeType):
 //   freetype  memset of the target + FT_Outline_Render(FT_RASTER_FLAG_AA) into it (the smooth
 //             rasterizer flattens conics/cubics itself).
-//   bezel     Rasterizer::fill_path: flatten (kDefaultRasterTolerancePx = 0.01 px, WangUniform,
-//             or --tolerance) + rasterize;
-//             the fill writes every pixel, so clearing is included.
+//   bezel     Rasterizer::fill_path of that outline placed in the box: flatten
+//             (kDefaultRasterTolerancePx = 0.01 px, WangUniform, or --tolerance) + rasterize; the
+//             fill writes every pixel, so clearing is included. The rasterizer alone is timed, not
+//             the glyph path's per-call setup, so the figures track the rasterizer's own speed.
 //   stb       stbtt_Rasterize (flatness 0.35 px, as stbtt_GetGlyphBitmap uses), which writes every
 //             pixel of the target itself. Its own parse of the glyph (stbtt_GetGlyphShape) is
 //             done outside the loop.
@@ -35,10 +38,13 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "bezel/diagnostics.hpp"
+#include "bezel/font.hpp"
+#include "bezel/glyph.hpp"
 #include "bezel/raster.hpp"
 
 #ifdef BEZEL_HAVE_STB
@@ -67,10 +73,12 @@ double thread_ns() {
     return double(ts.tv_sec) * 1e9 + double(ts.tv_nsec);
 }
 
+// One glyph at one size. The box is FreeType's (GlyphBoxMode::FreeType: the 26.6 control box,
+// floor/ceil), the same A8 target for every renderer.
 struct Glyph {
     unsigned gid = 0;
-    FT_Outline outline{};           // owned copy, translated so its box starts at (0, 0)
-    bezel::Path path;               // same outline in pixels, y down, box at (0, 0)
+    FT_Outline outline{};           // FreeType's own, owned copy, translated so its box starts at (0, 0)
+    bezel::Path path;               // that outline in the box: pixels, y down, box at (0, 0)
     int width = 0, height = 0;      // the A8 target
     int box_x0 = 0, box_y1 = 0;     // box in y-up pixels (for stb, which parses the font itself)
 #ifdef BEZEL_HAVE_AGG
@@ -94,44 +102,6 @@ struct Options {
     std::string only;  // time just this renderer (for profilers: callgrind, perf)
     bool runs(const char* name) const { return only.empty() || only == name; }
 };
-
-// FT_Outline (y up, 26.6) → bezel Path (y down, pixels), via FreeType's own decomposition so
-// conic runs and implied on-curve points are handled exactly as the smooth rasterizer sees them.
-struct Decompose {
-    bezel::Path* path;
-    double height;
-    bezel::Point p(const FT_Vector* v) const { return {v->x / 64.0, height - v->y / 64.0}; }
-};
-int dmove(const FT_Vector* to, void* u) {
-    auto* d = static_cast<Decompose*>(u);
-    if (!d->path->empty()) d->path->close();
-    d->path->move_to(d->p(to));
-    return 0;
-}
-int dline(const FT_Vector* to, void* u) {
-    auto* d = static_cast<Decompose*>(u);
-    d->path->line_to(d->p(to));
-    return 0;
-}
-int dconic(const FT_Vector* c, const FT_Vector* to, void* u) {
-    auto* d = static_cast<Decompose*>(u);
-    d->path->quad_to(d->p(c), d->p(to));
-    return 0;
-}
-int dcubic(const FT_Vector* c1, const FT_Vector* c2, const FT_Vector* to, void* u) {
-    auto* d = static_cast<Decompose*>(u);
-    d->path->cubic_to(d->p(c1), d->p(c2), d->p(to));
-    return 0;
-}
-
-bezel::Path to_path(const FT_Outline& o, int height) {
-    bezel::Path path;
-    Decompose d{&path, static_cast<double>(height)};
-    FT_Outline_Funcs funcs{dmove, dline, dconic, dcubic, 0, 0};
-    FT_Outline_Decompose(const_cast<FT_Outline*>(&o), &funcs, &d);
-    if (!path.empty()) path.close();
-    return path;
-}
 
 #ifdef BEZEL_HAVE_AGG
 void to_agg(const bezel::Path& path, agg::path_storage& out) {
@@ -158,6 +128,8 @@ void to_agg(const bezel::Path& path, agg::path_storage& out) {
 struct Face {
     std::string file;
     FT_Face face = nullptr;
+    std::optional<bezel::Font> font;   // bezel's view of the same file
+    std::optional<bezel::GlyphRasterizer> rasterizer;
     std::vector<unsigned char> bytes;  // for stb
 #ifdef BEZEL_HAVE_STB
     stbtt_fontinfo stb{};
@@ -178,28 +150,39 @@ std::vector<unsigned> glyph_set(FT_Face face, bool all) {
     return gids;
 }
 
-std::vector<Glyph> load_glyphs(FT_Library lib, Face& f, int size, bool all) {
+// bezel's glyph comes from the font module (GlyphRasterizer::prepare: Font::outline, the path
+// FreeType's FT_Outline_Decompose would give, in double); FreeType's rasterizer keeps its own
+// FT_Outline, loaded at the same size.
+std::vector<Glyph> load_glyphs(FT_Library lib, Face& f, int size, bool all, double tolerance_px) {
     std::vector<Glyph> out;
     FT_Set_Pixel_Sizes(f.face, 0, static_cast<FT_UInt>(size));
+    bezel::GlyphRenderOptions options;
+    options.size_px = size;
+    options.box = bezel::GlyphBoxMode::FreeType;
+    options.fill.flatten.tolerance_px = tolerance_px;
     for (unsigned gid : glyph_set(f.face, all)) {
         if (FT_Load_Glyph(f.face, gid, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP)) continue;
         FT_GlyphSlot slot = f.face->glyph;
         if (slot->format != FT_GLYPH_FORMAT_OUTLINE || slot->outline.n_points == 0) continue;
-        FT_BBox cb;
-        FT_Outline_Get_CBox(&slot->outline, &cb);
+        auto prepared = f.rasterizer->prepare(gid, options);
+        if (!prepared) {
+            std::fprintf(stderr, "bench_raster: %s\n", prepared.error().message.c_str());
+            continue;
+        }
+        const bezel::GlyphBox& box = prepared->box;
+        if (box.width == 0 || box.height == 0) continue;
         Glyph g;
         g.gid = gid;
-        int x0 = static_cast<int>(std::floor(cb.xMin / 64.0)), x1 = static_cast<int>(std::ceil(cb.xMax / 64.0));
-        int y0 = static_cast<int>(std::floor(cb.yMin / 64.0)), y1 = static_cast<int>(std::ceil(cb.yMax / 64.0));
-        g.width = std::max(1, x1 - x0);
-        g.height = std::max(1, y1 - y0);
-        g.box_x0 = x0;
-        g.box_y1 = y1;
+        g.width = box.width;
+        g.height = box.height;
+        g.box_x0 = box.left;
+        g.box_y1 = box.top;
+        g.path = prepared->path.transformed(
+            bezel::Affine::translate({-double(box.left), double(box.top)}));
         FT_Outline_New(lib, static_cast<FT_UInt>(slot->outline.n_points),
                        slot->outline.n_contours, &g.outline);
         FT_Outline_Copy(&slot->outline, &g.outline);
-        FT_Outline_Translate(&g.outline, -x0 * 64, -y0 * 64);
-        g.path = to_path(g.outline, g.height);
+        FT_Outline_Translate(&g.outline, -g.box_x0 * 64, -(g.box_y1 - g.height) * 64);
 #ifdef BEZEL_HAVE_AGG
         to_agg(g.path, g.agg_path);
 #endif
@@ -367,10 +350,18 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "bench_raster: %s: cannot open font\n", file.c_str());
             return 1;
         }
+        auto font = bezel::Font::open(file);
+        if (!font) {
+            std::fprintf(stderr, "bench_raster: %s\n", font.error().message.c_str());
+            return 1;
+        }
+        f.font.emplace(std::move(*font));
         std::ifstream in(file, std::ios::binary);
         f.bytes.assign(std::istreambuf_iterator<char>(in), {});
         faces.push_back(std::move(f));
     }
+    // Each rasterizer borrows its Font, which stays put once `faces` is complete.
+    for (Face& f : faces) f.rasterizer.emplace(*f.font);
 #ifdef BEZEL_HAVE_STB
     for (Face& f : faces)
         f.stb_ok = stbtt_InitFont(&f.stb, f.bytes.data(), stbtt_GetFontOffsetForIndex(f.bytes.data(), 0)) != 0;
@@ -390,7 +381,7 @@ int main(int argc, char** argv) {
     for (Face& f : faces) {
         std::string name = f.file.substr(f.file.find_last_of('/') + 1);
         for (int size : opt.sizes) {
-            std::vector<Glyph> glyphs = load_glyphs(lib, f, size, opt.all_glyphs);
+            std::vector<Glyph> glyphs = load_glyphs(lib, f, size, opt.all_glyphs, opt.tolerance_px);
             if (glyphs.empty()) continue;
             Target t;
             t.fit(glyphs);

@@ -1,13 +1,16 @@
-// `bezel bench`: bezel's Rasterizer against FreeType's smooth rasterizer on every glyph of a
+// `bezel bench`: bezel's glyph rasterizer against FreeType's smooth rasterizer on every glyph of a
 // font, per size: ns per glyph and the ratio FreeType / bezel (> 1: bezel is faster).
 //
 // What is timed, per glyph, on the same unhinted outline (loaded outside the timing) and the same
-// preallocated A8 target of the glyph's box (clearing included on both sides):
-//   bezel     Rasterizer::fill_path (flattening at kDefaultRasterTolerancePx + fill, which
-//             writes every pixel);
-//   freetype  Font::render_with_freetype: memset + FT_Outline_Render(FT_RASTER_FLAG_AA). Its
-//             outline is cached by the Font after the first call for a glyph, so each glyph is
-//             rendered once untimed and then `inner` times timed, and bezel the same way.
+// preallocated A8 target of the glyph's box (FreeType's, GlyphBoxMode::FreeType; clearing
+// included on both sides):
+//   bezel     GlyphRasterizer::draw of the prepared glyph, as `bezel glyph` renders it
+//             (flattening at kDefaultRasterTolerancePx + fill, which writes every pixel; accurate
+//             overlap for glyphs the font marks as overlapping);
+//   freetype  render_with_freetype (bezel/freetype_reference.hpp): memset +
+//             FT_Outline_Render(FT_RASTER_FLAG_AA). Its outline is cached by the Font after the
+//             first call for a glyph, so each glyph is rendered once untimed and then `inner`
+//             times timed, and bezel the same way.
 // Per size: ns/glyph = min over --repeat runs of (Σ over glyphs of the timed calls) /
 // (inner · glyphs), in thread CPU time. stb_truetype and AGG are compared in tools/bench
 // (bench_raster, built by `./dev bench`), not here.
@@ -23,8 +26,9 @@
 #include <memory>
 #include <sstream>
 
+#include "bezel/freetype_reference.hpp"
 #include "bezel/font.hpp"
-#include "bezel/raster.hpp"
+#include "bezel/glyph.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
 
@@ -76,68 +80,64 @@ Expected<std::vector<double>> parse_sizes(const std::string& text) {
     return out;
 }
 
-struct Job {
-    GlyphId gid;
-    Path path;
-    int x0, y0, w, h;   // the integer control box, pixels, y down
-};
-
-// Σ over glyphs of the time of `inner` calls of `render(job)` after one untimed call.
+// Σ over glyphs of the time of `inner` calls of `render(glyph)` after one untimed call.
 template <typename F>
-double time_set(const std::vector<Job>& jobs, int inner, F&& render) {
+double time_set(const std::vector<PreparedGlyph>& glyphs, int inner, F&& render) {
     double total = 0;
-    for (const Job& j : jobs) {
-        render(j);
+    for (const PreparedGlyph& g : glyphs) {
+        render(g);
         const double t0 = thread_ns();
-        for (int i = 0; i < inner; ++i) render(j);
+        for (int i = 0; i < inner; ++i) render(g);
         total += thread_ns() - t0;
     }
     return total;
 }
 
 Expected<BenchRow> bench_size(Font& font, double size, int repeat) {
-    std::vector<Job> jobs;
+    GlyphRasterizer rasterizer(font);
+    GlyphRenderOptions options;
+    options.size_px = size;
+    options.box = GlyphBoxMode::FreeType;   // the control box: FreeType's bitmap
+    std::vector<PreparedGlyph> glyphs;
     std::size_t most = 0;
     for (GlyphId gid = 0; gid < font.glyph_count(); ++gid) {
-        auto o = font.outline(gid, {size, false});
-        if (!o) return o.error();
-        const Rect& b = o->metrics.bounds_px;
-        if (b.is_empty() || o->path.empty()) continue;
-        Job j{gid, std::move(o->path), int(std::floor(b.x0)), int(std::floor(b.y0)), 0, 0};
-        j.w = std::max(1, int(std::ceil(b.x1)) - j.x0);
-        j.h = std::max(1, int(std::ceil(b.y1)) - j.y0);
-        most = std::max(most, std::size_t(j.w) * std::size_t(j.h));
-        jobs.push_back(std::move(j));
+        auto g = rasterizer.prepare(gid, options);
+        if (!g) return g.error();
+        if (g->box.width == 0 || g->box.height == 0 || g->path.empty()) continue;
+        most = std::max(most, std::size_t(g->box.width) * std::size_t(g->box.height));
+        glyphs.push_back(std::move(*g));
     }
     BenchRow row;
     row.size = size;
-    row.glyphs = jobs.size();
-    if (jobs.empty()) return row;
+    row.glyphs = glyphs.size();
+    if (glyphs.empty()) return row;
     std::vector<std::uint8_t> pixels(most);
-    Rasterizer raster;
+    auto target = [&](const PreparedGlyph& g) {
+        return MaskView{pixels.data(), g.box.width, g.box.height, g.box.width};
+    };
     Status failed = ok_status();
-    auto bezel = [&](const Job& j) {
-        Status s = raster.fill_path(j.path, Affine::translate({-double(j.x0), -double(j.y0)}),
-                                    MaskView{pixels.data(), j.w, j.h, j.w});
+    auto bezel = [&](const PreparedGlyph& g) {
+        Status s = rasterizer.draw(g, target(g));
         if (!s) failed = s;
     };
-    const OutlineOptions options{size, false};
-    auto freetype = [&](const Job& j) {
-        Status s = font.render_with_freetype(j.gid, options, MaskView{pixels.data(), j.w, j.h, j.w},
-                                             {-double(j.x0), -double(j.y0)});
+    const OutlineOptions outline_options{size, false};
+    auto freetype = [&](const PreparedGlyph& g) {
+        // The pen at (−left, top) from the bitmap's top-left corner, as draw() puts it.
+        Status s = render_with_freetype(font, g.gid, outline_options, target(g),
+                                        {-double(g.box.left), double(g.box.top)});
         if (!s) failed = s;
     };
     // Calls per glyph so that one run takes ≥ kMinRunNs for the faster of the two.
-    const double probe = std::min(time_set(jobs, 1, bezel), time_set(jobs, 1, freetype));
+    const double probe = std::min(time_set(glyphs, 1, bezel), time_set(glyphs, 1, freetype));
     if (!failed) return failed.error();
     const int inner = static_cast<int>(std::clamp(std::ceil(kMinRunNs / std::max(probe, 1.0)), 1.0, 4096.0));
     double best_bezel = HUGE_VAL, best_ft = HUGE_VAL;
     for (int r = 0; r < repeat; ++r) {
-        best_bezel = std::min(best_bezel, time_set(jobs, inner, bezel));
-        best_ft = std::min(best_ft, time_set(jobs, inner, freetype));
+        best_bezel = std::min(best_bezel, time_set(glyphs, inner, bezel));
+        best_ft = std::min(best_ft, time_set(glyphs, inner, freetype));
     }
     if (!failed) return failed.error();
-    const double calls = double(inner) * double(jobs.size());
+    const double calls = double(inner) * double(glyphs.size());
     row.bezel_ns = best_bezel / calls;
     row.freetype_ns = best_ft / calls;
     row.ratio = row.freetype_ns / row.bezel_ns;

@@ -90,20 +90,35 @@ std::optional<OutputFormat> parse_format(std::string_view name) {
     return std::nullopt;
 }
 
-Expected<OutputFormat> choose_format(const std::string& format_option,
-                                     const std::string& output_file, OutputFormat fallback) {
-    if (!format_option.empty()) {
-        if (auto f = parse_format(format_option)) return *f;
-        return Error{"-O '" + format_option + "': unknown output format (expected text, json or svg)"};
-    }
+Expected<std::string> pick_output_format(const std::string& format_option,
+                                         const std::string& output_file,
+                                         const std::vector<FormatExtension>& extensions,
+                                         const std::string& fallback) {
+    if (!format_option.empty()) return format_option;
     if (output_file.empty() || output_file == "-") return fallback;
     std::string ext = std::filesystem::path(output_file).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == ".txt") return OutputFormat::Text;
-    if (ext == ".json") return OutputFormat::Json;
-    if (ext == ".svg") return OutputFormat::Svg;
+    std::vector<const std::string*> listed;
+    for (const FormatExtension& e : extensions) {
+        if (e.extension == ext) return e.format;
+        if (e.listed) listed.push_back(&e.extension);
+    }
+    // ".a, .b or .c"
+    std::string known;
+    for (std::size_t i = 0; i < listed.size(); ++i)
+        known += (i == 0 ? "" : i + 1 == listed.size() ? " or " : ", ") + *listed[i];
     return Error{output_file + ": cannot tell the output format from the extension '" + ext +
-                 "' (use .txt, .json or .svg, or give -O)"};
+                 "' (use " + known + ", or give -O)"};
+}
+
+Expected<OutputFormat> choose_format(const std::string& format_option,
+                                     const std::string& output_file, OutputFormat fallback) {
+    auto name = pick_output_format(format_option, output_file,
+                                   {{".txt", "text"}, {".json", "json"}, {".svg", "svg"}},
+                                   format_name(fallback));
+    if (!name) return name.error();
+    if (auto f = parse_format(*name)) return *f;
+    return Error{"-O '" + format_option + "': unknown output format (expected text, json or svg)"};
 }
 
 namespace {

@@ -64,9 +64,24 @@ const char* format_name(OutputFormat format);
 // The format named by `-O`, or nullopt for an unknown name.
 std::optional<OutputFormat> parse_format(std::string_view name);
 
-// Picks the output format: `-O` wins; otherwise the extension of `-o FILE` (.txt, .json, .svg,
-// case-insensitive); otherwise (stdout) `fallback`. An unknown or missing extension with no `-O`
-// is a usage error naming the file.
+// One -o file extension and the output format it selects.
+struct FormatExtension {
+    std::string extension;   // lower case, with the dot: ".png"
+    std::string format;      // the -O name it stands for
+    bool listed = true;      // named in the unknown-extension error (false: an alias, as .ansi)
+};
+// Every subcommand's rule for its output format: -O's value when given (the subcommand checks the
+// name, mostly through CLI11), else the format the -o file's extension selects (compared
+// case-insensitively), else `fallback` (stdout: no -o, or -o -). An extension not in `extensions`
+// (or none) is an Error naming the file and the listed extensions, for fail_usage:
+// "out.xyz: cannot tell the output format from the extension '.xyz' (use .png or .pgm, or give -O)".
+Expected<std::string> pick_output_format(const std::string& format_option,
+                                         const std::string& output_file,
+                                         const std::vector<FormatExtension>& extensions,
+                                         const std::string& fallback);
+
+// pick_output_format for text, json and svg: the extensions .txt, .json, .svg. An unknown -O
+// name is an Error.
 Expected<OutputFormat> choose_format(const std::string& format_option,
                                      const std::string& output_file, OutputFormat fallback);
 

@@ -29,8 +29,8 @@ struct FillArgs {
 const std::string kFillCommand = "bezel fill";
 
 Expected<FillFormat> pick_format(const FillArgs& args) {
-    auto name = pick_picture_format(args.format, args.output_file,
-                                    {{".png", "png"}, {".pgm", "pgm"}, {".txt", "ascii"}}, "ascii");
+    auto name = pick_output_format(args.format, args.output_file,
+                                   {{".png", "png"}, {".pgm", "pgm"}, {".txt", "ascii"}}, "ascii");
     if (!name) return name.error();
     if (*name == "png") return FillFormat::Png;
     if (*name == "pgm") return FillFormat::Pgm;

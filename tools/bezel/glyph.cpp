@@ -1,5 +1,6 @@
-// `bezel glyph`: glyph bitmaps from bezel's rasterizer, as ASCII art, JSON (a stable contract),
-// PNG or PGM/PPM. Boxes follow FreeType's bitmap_left / bitmap_top (glyph_bitmap.hpp).
+// `bezel glyph`: glyph bitmaps from the library's GlyphRasterizer, as ASCII art, JSON (a stable
+// contract), PNG or PGM/PPM. Boxes follow FreeType's bitmap_left / bitmap_top
+// (GlyphBoxMode::FreeType).
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <iostream>
@@ -28,10 +29,10 @@ const std::string kGlyphCommand = "bezel glyph";
 
 // -O wins; else the -o file's extension; else ASCII on stdout.
 Expected<GlyphFormat> pick_format(const GlyphArgs& args) {
-    auto name = pick_picture_format(args.format, args.output_file,
-                                    {{".txt", "ascii"}, {".json", "json"}, {".png", "png"},
-                                     {".pgm", "pgm"}, {".ppm", "pgm"}},
-                                    "ascii");
+    auto name = pick_output_format(args.format, args.output_file,
+                                   {{".txt", "ascii"}, {".json", "json"}, {".png", "png"},
+                                    {".pgm", "pgm"}, {".ppm", "pgm"}},
+                                   "ascii");
     if (!name) return name.error();
     if (*name == "ascii") return GlyphFormat::Ascii;
     if (*name == "json") return GlyphFormat::Json;
@@ -72,45 +73,52 @@ int run_glyph(const GlyphArgs& args) {
     if (Status t = check_tolerance(args.tolerance_px); !t)
         return fail_usage(t.error().message, kGlyphCommand);
 
-    GlyphRenderSettings settings;
-    settings.size_px = args.font.size_px;
-    settings.hinting = args.font.hinting;
-    settings.offset = *offset;
-    settings.rule = args.fill == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
-    settings.mode = args.lcd.empty() ? GlyphMode::Gray
-                    : args.lcd == "bgr" ? GlyphMode::LcdBgr
-                                        : GlyphMode::LcdRgb;
-    settings.flatten.tolerance_px = args.tolerance_px;
-    settings.flatten.method = method_named(args.flatten);
-    settings.overlap = args.overlap == "accurate" ? OverlapMode::Accurate : OverlapMode::Accumulate;
+    GlyphRenderOptions options;
+    options.size_px = args.font.size_px;
+    options.hinting = args.font.hinting;
+    options.offset_px = *offset;
+    options.box = GlyphBoxMode::FreeType;   // the JSON contract: FT_Render_Glyph's box
+    FillOptions& fill = options.fill;
+    fill.format = args.lcd.empty() ? CoverageFormat::Gray : CoverageFormat::Lcd;
+    fill.lcd_order = args.lcd == "bgr" ? LcdOrder::Bgr : LcdOrder::Rgb;
+    fill.rule = args.fill == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
+    fill.overlap = args.overlap == "accurate" ? OverlapMode::Accurate : OverlapMode::Accumulate;
+    fill.flatten.tolerance_px = args.tolerance_px;
+    fill.flatten.method = method_named(args.flatten);
 
     auto font = open_font(args.font);
     if (!font) return fail_runtime(font.error().message);
     auto requests = requested_glyphs(args.which, *font);
     if (!requests) return fail_runtime(requests.error().message);
 
-    // Every box first, so that the pixel budget is checked before any pixel is allocated.
+    // Each glyph's outline is loaded once; its box is added to the pixel budget before its
+    // pixels are allocated.
+    GlyphRasterizer rasterizer(*font);
     std::vector<GlyphBitmap> glyphs;
     std::size_t pixels = 0;
     for (const GlyphRequest& r : *requests) {
-        auto g = measure_glyph(*font, r, settings);
-        if (!g) return fail_runtime(g.error().message);
-        pixels += static_cast<std::size_t>(g->width) * static_cast<std::size_t>(g->height);
+        auto prepared = rasterizer.prepare(r.gid, options);
+        if (!prepared) return fail_runtime(prepared.error().message);
+        const GlyphBox& box = prepared->box;
+        pixels += static_cast<std::size_t>(box.width) * static_cast<std::size_t>(box.height);
         if (pixels > kMaxGlyphOutputPixels)
             return fail_runtime(font->file() + ": the glyphs need more than " +
                                 std::to_string(kMaxGlyphOutputPixels) +
                                 " pixels (kMaxGlyphOutputPixels); use a smaller --font-size");
-        glyphs.push_back(std::move(*g));
-    }
-    Rasterizer raster;
-    for (GlyphBitmap& g : glyphs)
-        if (Status st = render_glyph(raster, settings, g); !st)
+        GlyphBitmap g{r.gid, font->glyph_name(r.gid), r.code_point, box, fill.format,
+                      fill.lcd_order, {}};
+        const int row_bytes = box.width * g.bytes_per_pixel();
+        g.pixels.assign(static_cast<std::size_t>(row_bytes) * static_cast<std::size_t>(box.height), 0);
+        const MaskView view{g.pixels.data(), row_bytes, box.height, row_bytes};
+        if (Status st = rasterizer.draw(*prepared, view); !st)
             return fail_runtime(font->file() + ": " + st.error().message);
+        glyphs.push_back(std::move(g));
+    }
 
     std::string document;
     switch (*format) {
-        case GlyphFormat::Ascii: document = glyphs_ascii(glyphs, settings); break;
-        case GlyphFormat::Json: document = glyphs_json(glyphs, settings); break;
+        case GlyphFormat::Ascii: document = glyphs_ascii(glyphs, options); break;
+        case GlyphFormat::Json: document = glyphs_json(glyphs, options); break;
         case GlyphFormat::Png:
         case GlyphFormat::Pnm: {
             auto picture = *format == GlyphFormat::Png ? glyphs_png(glyphs) : glyphs_pnm(glyphs);

@@ -43,17 +43,17 @@ Layout layout(const std::vector<GlyphBitmap>& glyphs) {
     int above = 0, below = 0;
     bool any = false;
     for (const GlyphBitmap& g : glyphs) {
-        if (g.width == 0 || g.height == 0) continue;
-        above = any ? std::max(above, g.top) : g.top;
-        below = any ? std::max(below, g.height - g.top) : g.height - g.top;
+        if (g.box.width == 0 || g.box.height == 0) continue;
+        above = any ? std::max(above, g.box.top) : g.box.top;
+        below = any ? std::max(below, g.box.height - g.box.top) : g.box.height - g.box.top;
         any = true;
     }
     l.baseline = above;
     l.height = any ? above + below : 0;
     for (const GlyphBitmap& g : glyphs) {
-        if (l.width > 0 && g.width > 0) l.width += 1;  // one empty column between glyphs
+        if (l.width > 0 && g.box.width > 0) l.width += 1;  // one empty column between glyphs
         l.x.push_back(l.width);
-        l.width += g.width;
+        l.width += g.box.width;
     }
     return l;
 }
@@ -67,10 +67,10 @@ Expected<std::vector<std::uint8_t>> compose(const std::vector<GlyphBitmap>& glyp
     std::vector<std::uint8_t> px(static_cast<std::size_t>(l.width) * bpp * l.height, 0);
     for (std::size_t i = 0; i < glyphs.size(); ++i) {
         const GlyphBitmap& g = glyphs[i];
-        const int row0 = l.baseline - g.top;
-        for (int y = 0; y < g.height; ++y)
-            std::copy_n(g.pixels.data() + static_cast<std::size_t>(y) * g.width * bpp,
-                        static_cast<std::size_t>(g.width) * bpp,
+        const int row0 = l.baseline - g.box.top;
+        for (int y = 0; y < g.box.height; ++y)
+            std::copy_n(g.pixels.data() + static_cast<std::size_t>(y) * g.box.width * bpp,
+                        static_cast<std::size_t>(g.box.width) * bpp,
                         px.data() + (static_cast<std::size_t>(row0 + y) * l.width + l.x[i]) * bpp);
     }
     return px;
@@ -92,6 +92,11 @@ int picture_bpp(const std::vector<GlyphBitmap>& glyphs) {
 
 }  // namespace
 
+const char* mode_name(const GlyphBitmap& g) {
+    if (g.format == CoverageFormat::Gray) return "gray";
+    return g.lcd_order == LcdOrder::Bgr ? "lcd-bgr" : "lcd-rgb";
+}
+
 std::string ascii_art(ConstMaskView mask) {
     std::string out;
     for (int y = 0; y < mask.height; ++y) {
@@ -103,23 +108,23 @@ std::string ascii_art(ConstMaskView mask) {
     return out;
 }
 
-std::string glyphs_ascii(const std::vector<GlyphBitmap>& glyphs, const GlyphRenderSettings& s) {
+std::string glyphs_ascii(const std::vector<GlyphBitmap>& glyphs, const GlyphRenderOptions& options) {
     std::string out;
     for (const GlyphBitmap& g : glyphs) {
         out += "glyph " + std::to_string(g.gid) + " " + g.name + char_label(g) + ", " +
-               six_digits(s.size_px) + " px, " + mode_name(g.mode) + ": " + std::to_string(g.width) +
-               "x" + std::to_string(g.height) + ", left " + std::to_string(g.left) + ", top " +
-               std::to_string(g.top) + ", advance " + six_digits(g.advance_px);
-        if (g.accurate_overlap) out += ", accurate overlap";
-        if (g.mode != GlyphMode::Gray) out += " (one character per subpixel)";
+               six_digits(options.size_px) + " px, " + mode_name(g) + ": " + std::to_string(g.box.width) +
+               "x" + std::to_string(g.box.height) + ", left " + std::to_string(g.box.left) + ", top " +
+               std::to_string(g.box.top) + ", advance " + six_digits(g.box.advance_px);
+        if (g.box.overlap == OverlapMode::Accurate) out += ", accurate overlap";
+        if (g.format == CoverageFormat::Lcd) out += " (one character per subpixel)";
         out += "\n";
-        const int row_bytes = g.width * g.bytes_per_pixel();
-        out += ascii_art(ConstMaskView{g.pixels.data(), row_bytes, g.height, row_bytes});
+        const int row_bytes = g.box.width * g.bytes_per_pixel();
+        out += ascii_art(ConstMaskView{g.pixels.data(), row_bytes, g.box.height, row_bytes});
     }
     return out;
 }
 
-std::string glyphs_json(const std::vector<GlyphBitmap>& glyphs, const GlyphRenderSettings& s) {
+std::string glyphs_json(const std::vector<GlyphBitmap>& glyphs, const GlyphRenderOptions& options) {
     using nlohmann::ordered_json;
     ordered_json arr = ordered_json::array();
     static const char kHex[] = "0123456789abcdef";
@@ -133,17 +138,17 @@ std::string glyphs_json(const std::vector<GlyphBitmap>& glyphs, const GlyphRende
             o["char"] = utf8;
             o["code_point"] = format_code_point(*g.code_point);
         }
-        o["size"] = s.size_px;
-        o["left"] = g.left;
-        o["top"] = g.top;
-        o["width"] = g.width;
-        o["height"] = g.height;
-        o["advance"] = g.advance_px;
-        o["mode"] = mode_name(g.mode);
-        o["overlap"] = g.accurate_overlap ? "accurate" : "accumulate";
+        o["size"] = options.size_px;
+        o["left"] = g.box.left;
+        o["top"] = g.box.top;
+        o["width"] = g.box.width;
+        o["height"] = g.box.height;
+        o["advance"] = g.box.advance_px;
+        o["mode"] = mode_name(g);
+        o["overlap"] = g.box.overlap == OverlapMode::Accurate ? "accurate" : "accumulate";
         ordered_json rows = ordered_json::array();
-        const int row_bytes = g.width * g.bytes_per_pixel();
-        for (int y = 0; y < g.height; ++y) {
+        const int row_bytes = g.box.width * g.bytes_per_pixel();
+        for (int y = 0; y < g.box.height; ++y) {
             std::string hex;
             hex.reserve(static_cast<std::size_t>(row_bytes) * 2);
             for (int x = 0; x < row_bytes; ++x) {

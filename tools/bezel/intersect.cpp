@@ -1,9 +1,6 @@
 // `bezel intersect`: where two paths meet (or where one path meets itself), as text, JSON, an
 // annotated SVG or a PNG (see intersect_output.hpp for the formats).
 #include <CLI/CLI.hpp>
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
 #include <memory>
 
 #include "cli_common.hpp"
@@ -22,23 +19,16 @@ struct IntersectArgs {
 
 enum class IntersectFormat { Text, Json, Svg, Png };
 
-// -O wins; else a .png output file means PNG; else the shared rule (extension or text).
+// -O wins; else the -o file's extension (.txt, .json, .svg, .png); else text.
 Expected<IntersectFormat> pick_format(const IntersectArgs& args) {
-    if (args.format == "png") return IntersectFormat::Png;
-    if (args.format.empty() && !args.output_file.empty()) {
-        std::string ext = std::filesystem::path(args.output_file).extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(),
-                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        if (ext == ".png") return IntersectFormat::Png;
-    }
-    auto f = choose_format(args.format, args.output_file, OutputFormat::Text);
-    if (!f) return f.error();
-    switch (*f) {
-        case OutputFormat::Text: return IntersectFormat::Text;
-        case OutputFormat::Json: return IntersectFormat::Json;
-        case OutputFormat::Svg: return IntersectFormat::Svg;
-    }
-    return IntersectFormat::Text;
+    auto name = pick_output_format(
+        args.format, args.output_file,
+        {{".txt", "text"}, {".json", "json"}, {".svg", "svg"}, {".png", "png", false}}, "text");
+    if (!name) return name.error();
+    if (*name == "png") return IntersectFormat::Png;
+    if (*name == "json") return IntersectFormat::Json;
+    if (*name == "svg") return IntersectFormat::Svg;
+    return IntersectFormat::Text;   // CLI11 checked the name
 }
 
 int run_intersect(const IntersectArgs& args) {

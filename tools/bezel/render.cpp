@@ -173,11 +173,10 @@ int run_render(RenderArgs& args) {
     if (!bg) return fail_usage("--background: " + bg.error().message, kRenderCommand);
     options.foreground = *fg;
     options.background = *bg;
-    options.mode = args.lcd.empty() ? RenderMode::Gray
-                   : args.lcd == "bgr" ? RenderMode::LcdBgr
-                                       : RenderMode::LcdRgb;
+    options.format = args.lcd.empty() ? CoverageFormat::Gray : CoverageFormat::Lcd;
+    options.lcd_order = args.lcd == "bgr" ? LcdOrder::Bgr : LcdOrder::Rgb;
 
-    if (args.stroke_px > 0 && options.mode != RenderMode::Gray)
+    if (args.stroke_px > 0 && options.format != CoverageFormat::Gray)
         return fail_usage("--stroke draws gray coverage; it does not combine with --lcd", kRenderCommand);
 
     if (preview && args.cmd->count("--margin") == 0) args.margin_px = kDefaultPreviewMarginPx;
@@ -206,7 +205,7 @@ int run_render(RenderArgs& args) {
 
     auto renderer = TextRenderer::open(args.font.file, args.font.face_index);
     if (!renderer) return fail_runtime(renderer.error().message);
-    const bool gray = options.mode == RenderMode::Gray && fg->r == fg->g && fg->g == fg->b &&
+    const bool gray = options.format == CoverageFormat::Gray && fg->r == fg->g && fg->g == fg->b &&
                       bg->r == bg->g && bg->g == bg->b;
     const bool alpha = fg->a != 255 || bg->a != 255;
     const std::string destination = args.output_file.empty() ? "<stdout>" : args.output_file;

@@ -4,34 +4,43 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdlib>
-#include <filesystem>
 #include <optional>
 #include <thread>
 
 namespace bezel::cli {
 
 namespace {
+
 std::string bytes_of(const std::vector<std::uint8_t>& v) { return std::string(v.begin(), v.end()); }
+
+// A gray page and the PNG stream deflating its finished rows. The stream starts at the first
+// finished rows, when the page has its size; it is declared after `page`, so it is destroyed
+// (its workers joined) first.
+struct PngBands final : PageRowsSink {
+    explicit PngBands(int worker_count) : workers(worker_count) {}
+    void rows_final(int rows) override {
+        if (!png) png.emplace(page.view(), workers);
+        png->rows_final(rows);
+    }
+    int workers;
+    Mask page;
+    std::optional<PngGrayStream> png;
+};
+
 }  // namespace
 
 Expected<PageFormat> pick_page_format(const std::string& format_option,
                                       const std::string& output_file, bool stdout_is_terminal) {
-    std::string name = format_option;
-    if (name.empty() && !output_file.empty() && output_file != "-") {
-        std::string ext = std::filesystem::path(output_file).extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(),
-                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        if (ext == ".png") name = "png";
-        else if (ext == ".pgm") name = "pgm";
-        else if (ext == ".ppm") name = "ppm";
-        else if (ext == ".ans" || ext == ".ansi") name = "ansi";
-        else
-            return Error{output_file + ": cannot tell the output format from the extension '" + ext +
-                         "' (use .png, .pgm, .ppm or .ans, or give -O)"};
-    }
-    if (name.empty()) return stdout_is_terminal ? PageFormat::Ansi : PageFormat::Png;
+    auto picked = pick_output_format(format_option, output_file,
+                                     {{".png", "png"},
+                                      {".pgm", "pgm"},
+                                      {".ppm", "ppm"},
+                                      {".ans", "ansi"},
+                                      {".ansi", "ansi", false}},
+                                     stdout_is_terminal ? "ansi" : "png");
+    if (!picked) return picked.error();
+    const std::string& name = *picked;
     if (name == "png") return PageFormat::Png;
     if (name == "pgm") return PageFormat::Pgm;
     if (name == "ppm") return PageFormat::Ppm;
@@ -69,23 +78,18 @@ Expected<std::string> render_gray_page(TextRenderer& renderer, std::string_view 
                                        const std::string& destination) {
     if (format != PageFormat::Png && format != PageFormat::Pgm)
         return Error{"a gray page is written as PNG or PGM only"};
-    Mask page;
     if (format == PageFormat::Pgm) {
-        if (auto drawn = renderer.render_gray(text, options, page, {}); !drawn) return drawn.error();
-        return bytes_of(encode_pgm(page.view()));
+        auto page = renderer.render_gray(text, options);
+        if (!page) return page.error();
+        return bytes_of(encode_pgm(page->view()));
     }
     // Deflating is the largest part of `bezel render`'s time on a page of text, so the PNG's
     // bands are deflated by workers on the other cores (at least one) while this thread draws
-    // the lines below them, then by all of them. Declared after `page`: destroyed (its workers
-    // joined) first.
-    const int workers = static_cast<int>(std::max(2u, std::thread::hardware_concurrency()) - 1);
-    std::optional<PngGrayStream> png;
-    auto drawn = renderer.render_gray(text, options, page, [&](int rows) {
-        if (!png) png.emplace(page.view(), workers);
-        png->rows_final(rows);
-    });
-    if (!drawn) return drawn.error();
-    auto encoded = png->finish();  // render_gray's last call, with the page height, made `png`
+    // the lines below them, then by all of them.
+    PngBands bands(static_cast<int>(std::max(2u, std::thread::hardware_concurrency()) - 1));
+    if (auto drawn = renderer.render_gray_streaming(text, options, bands.page, bands); !drawn)
+        return drawn.error();
+    auto encoded = bands.png->finish();  // the sink's last call, with the page height, made `png`
     if (!encoded) return Error{destination + ": " + encoded.error().message};
     return bytes_of(*encoded);
 }

@@ -3,8 +3,6 @@
 // stable JSON, SVG path data, an annotated SVG or a PNG (see smooth_output.hpp).
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <cctype>
-#include <filesystem>
 #include <memory>
 
 #include "bezel/smooth.hpp"
@@ -38,20 +36,13 @@ enum class SmoothFormat { Json, Svg, Path, Png };
 
 // -O wins; else the -o file's extension (.json, .svg, .png, .path/.txt); else JSON.
 Expected<SmoothFormat> pick_format(const SmoothArgs& args) {
-    std::string name = args.format;
-    if (name.empty() && !args.output_file.empty() && args.output_file != "-") {
-        std::string ext = std::filesystem::path(args.output_file).extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(),
-                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        if (ext == ".json") name = "json";
-        else if (ext == ".svg") name = "svg";
-        else if (ext == ".png") name = "png";
-        else if (ext == ".path" || ext == ".txt") name = "path";
-        else
-            return Error{args.output_file + ": cannot tell the output format from the extension '" +
-                         ext + "' (use .json, .svg, .png or .path, or give -O)"};
-    }
-    if (name.empty() || name == "json") return SmoothFormat::Json;
+    auto picked = pick_output_format(
+        args.format, args.output_file,
+        {{".json", "json"}, {".svg", "svg"}, {".png", "png"}, {".path", "path"}, {".txt", "path", false}},
+        "json");
+    if (!picked) return picked.error();
+    const std::string& name = *picked;
+    if (name == "json") return SmoothFormat::Json;
     if (name == "svg") return SmoothFormat::Svg;
     if (name == "path") return SmoothFormat::Path;
     if (name == "png") return SmoothFormat::Png;

@@ -5,7 +5,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -39,19 +38,12 @@ struct StrokeArgs {
 
 // -O wins; else the -o file's extension (.svg, .png, .path/.txt); else path data.
 Expected<StrokeFormat> pick_format(const StrokeArgs& args) {
-    std::string name = args.format;
-    if (name.empty() && !args.output_file.empty() && args.output_file != "-") {
-        std::string ext = std::filesystem::path(args.output_file).extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(),
-                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        if (ext == ".svg") name = "svg";
-        else if (ext == ".png") name = "png";
-        else if (ext == ".path" || ext == ".txt") name = "path";
-        else
-            return Error{args.output_file + ": cannot tell the output format from the extension '" +
-                         ext + "' (use .path, .svg or .png, or give -O)"};
-    }
-    if (name.empty() || name == "path") return StrokeFormat::Path;
+    auto picked = pick_output_format(
+        args.format, args.output_file,
+        {{".path", "path"}, {".svg", "svg"}, {".png", "png"}, {".txt", "path", false}}, "path");
+    if (!picked) return picked.error();
+    const std::string& name = *picked;
+    if (name == "path") return StrokeFormat::Path;
     if (name == "svg") return StrokeFormat::Svg;
     return StrokeFormat::Png;  // CLI11 checked the name
 }

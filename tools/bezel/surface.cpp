@@ -2,9 +2,7 @@
 // through bezel's rasterizer), or tessellated to a mesh (OBJ, STL).
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <filesystem>
 #include <memory>
 
 #include "bezel/image.hpp"
@@ -40,19 +38,11 @@ struct SurfaceArgs {
 enum class SurfaceFormat { Png, Obj, Stl, StlAscii };
 
 Expected<SurfaceFormat> pick_format(const SurfaceArgs& args) {
-    std::string name = args.format;
-    if (name.empty() && !args.output_file.empty() && args.output_file != "-") {
-        std::string ext = std::filesystem::path(args.output_file).extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(),
-                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        if (ext == ".png") name = "png";
-        else if (ext == ".obj") name = "obj";
-        else if (ext == ".stl") name = "stl";
-        else
-            return Error{args.output_file + ": cannot tell the output format from the extension '" +
-                         ext + "' (use .png, .obj or .stl, or give -O)"};
-    }
-    if (name.empty() || name == "png") return SurfaceFormat::Png;
+    auto picked = pick_output_format(args.format, args.output_file,
+                                     {{".png", "png"}, {".obj", "obj"}, {".stl", "stl"}}, "png");
+    if (!picked) return picked.error();
+    const std::string& name = *picked;
+    if (name == "png") return SurfaceFormat::Png;
     if (name == "obj") return SurfaceFormat::Obj;
     if (name == "stl") return SurfaceFormat::Stl;
     return SurfaceFormat::StlAscii;  // CLI11 checked the name

@@ -17,13 +17,16 @@
 
 #include "bezel/expected.hpp"
 #include "bezel/geometry.hpp"
-#include "bezel/image.hpp"
 #include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
 namespace bezel {
 
 using GlyphId = std::uint32_t;
+
+namespace font_detail {
+struct Access;
+}  // namespace font_detail
 
 // Face-wide metrics in font units, y up.
 struct FontMetrics {
@@ -143,17 +146,11 @@ public:
     // FreeType cannot load (its reason), a bitmap-only font.
     Expected<GlyphOutline> outline(GlyphId gid, const OutlineOptions& options);
 
-    // FreeType's own anti-aliased rasterizer (FT_Outline_Render with FT_RASTER_FLAG_AA, the
-    // "smooth" renderer) on the unhinted outline of `gid` at options.size_px, written into
-    // `target` with the pen at `origin` (pixels, y down; every target pixel is written). For
-    // comparisons and benchmarks against bezel's rasterizer (`bezel bench`); FreeType rounds the
-    // outline to its 1/64 px grid and flattens curves itself. Errors as outline(), plus a
-    // target larger than kMaxBitmapDim-style limits of FreeType (32767 px).
-    Status render_with_freetype(GlyphId gid, const OutlineOptions& options,
-                                const MaskView& target, Vec2 origin);
-
 private:
     struct Impl;
+    // The font module's other files (render_with_freetype in bezel/freetype_reference.hpp) reach Impl
+    // through font_detail::Access.
+    friend struct font_detail::Access;
     explicit Font(std::unique_ptr<Impl> impl);
     // outline() and glyph_metrics() share it; `want_path` false skips building the Path.
     Expected<GlyphOutline> load_glyph(GlyphId gid, const OutlineOptions& options, bool want_path);

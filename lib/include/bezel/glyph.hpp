@@ -6,7 +6,8 @@
 //
 // Threading: a GlyphRasterizer or GlyphCache holds scratch memory (and the rasterizer borrows a
 // Font); one object must not be used from two threads at once. Steady state allocates nothing per
-// glyph: buffers are reused and the cache is bounded.
+// glyph: cache hits reuse their buffers and the cache is bounded (a miss, like every prepare(),
+// allocates the outline it loads).
 #pragma once
 
 #include <cstddef>
@@ -14,53 +15,91 @@
 #include <memory>
 
 #include "bezel/expected.hpp"
+#include "bezel/flatten.hpp"
 #include "bezel/font.hpp"
+#include "bezel/geometry.hpp"
 #include "bezel/image.hpp"
 #include "bezel/limits.hpp"
 #include "bezel/raster.hpp"
 
 namespace bezel {
 
-enum class RenderMode : std::uint8_t { Gray, LcdRgb, LcdBgr };
+// Where a glyph's bitmap box is put around its outline.
+enum class GlyphBoxMode : std::uint8_t {
+    // The smallest integer box covering the outline's curves at the pen offset (their tight
+    // bounds): columns floor(x0 + dx) .. ceil(x1 + dx), rows likewise. The default.
+    Tight,
+    // FreeType's FT_Render_Glyph box (ft_glyphslot_preset_bitmap): the outline's CONTROL box in
+    // 26.6 fixed point, shifted by the pen offset rounded to 26.6, floor/ceil to whole pixels.
+    // It holds the Tight box (control points may lie outside the ink) up to FreeType's 1/64 px
+    // rounding: an ink edge a hair past a pixel boundary can round inside the box, and that hair
+    // of coverage is cut, as FreeType cuts it. What `bezel glyph`'s JSON contract promises.
+    FreeType,
+};
 
 struct GlyphRenderOptions {
     double size_px = 16;
-    double subpixel_x = 0;     // pen's fractional x offset in [0, 1)
-    double subpixel_y = 0;     // in [0, 1)
-    RenderMode mode = RenderMode::Gray;
-    FillRule rule = FillRule::NonZero;
-    // Accurate is chosen automatically for glyphs that mark overlapping contours; Accumulate
-    // here never forces plain accumulation on them.
-    OverlapMode overlap = OverlapMode::Accumulate;
-    double tolerance_px = kDefaultRasterTolerancePx;
+    bool hinting = false;   // FreeType's hinter, as OutlineOptions::hinting
+    // The pen position relative to the glyph's whole-pixel origin, pixels, x right, y DOWN. A
+    // toolkit passes the fractional part of its pen position, in [0, 1), and adds the whole part
+    // to the box's left / −top itself (GlyphCache quantizes it to kSubpixelBins bins); any finite
+    // offset with |x|, |y| ≤ kMaxGlyphOffsetPx is accepted and moves the box with the ink.
+    Vec2 offset_px;
+    GlyphBoxMode box = GlyphBoxMode::Tight;
+    // How the outline is filled: fill rule, overlap mode, flattening, gray or LCD coverage and
+    // the LCD order and filter, as for any Rasterizer fill. Accurate overlap is chosen
+    // automatically for glyphs that mark overlapping contours (Accumulate here never forces plain
+    // accumulation on them). `fill.origin` must be zero: `offset_px` places the pen.
+    FillOptions fill;
 };
 
-// Where a glyph bitmap sits relative to the pen, and its size. For LCD modes `width` counts
+// Where a glyph bitmap sits relative to the pen, and its size. For LCD coverage `width` counts
 // DISPLAY pixels and the bitmap has 3 bytes per pixel.
 struct GlyphBox {
     int left = 0, top = 0;        // bitmap_left / bitmap_top, as FreeType
     int width = 0, height = 0;
-    double advance_px = 0;           // horizontal advance
+    double advance_px = 0;        // horizontal advance
+    // The overlap mode the glyph is filled with: Accurate when the font marks its contours as
+    // overlapping or the options ask for it.
+    OverlapMode overlap = OverlapMode::Accumulate;
+};
+
+// A glyph loaded and measured for one set of options: prepare() reads the outline from the Font
+// once, draw() fills it (as often as wanted, into any target) without touching the Font.
+struct PreparedGlyph {
+    GlyphId gid = 0;
+    GlyphRenderOptions options;
+    GlyphBox box;
+    Path path;   // the outline, pixels, y down, pen at the origin (before the offset)
 };
 
 // Rasterizes single glyphs of one Font (borrowed: it must outlive this object) into caller
-// buffers. What a toolkit calls to fill its own atlas.
+// buffers with a stride. What a toolkit calls to fill its own atlas; the one glyph path of bezel
+// (GlyphCache, TextRenderer and the bezel CLI render glyphs through it).
 class GlyphRasterizer {
 public:
     explicit GlyphRasterizer(Font& font);
 
-    // The box a glyph will need (smallest integer box covering the outline at the subpixel
-    // offset, plus kLcdPaddingPx on each side in LCD modes). Errors as Font::outline.
+    // Loads the outline of `gid` (one Font::outline call) and computes its box by
+    // `options.box`, plus kLcdPaddingPx display pixels on each side in LCD modes. Errors name the
+    // glyph: an offset that is not finite or beyond kMaxGlyphOffsetPx, a box larger than
+    // kMaxBitmapDim, and Font::outline's (size out of range, gid ≥ glyph_count(), …).
+    Expected<PreparedGlyph> prepare(GlyphId gid, const GlyphRenderOptions& options);
+    // Fills `glyph` into the top-left box.width × box.height corner of `target` (width × 3 bytes
+    // in LCD modes), writing every byte of that corner and nothing else. A glyph with an empty
+    // box writes nothing and needs no target. Errors: a target smaller than the box (or without
+    // memory), the Rasterizer's, each naming the glyph.
+    Status draw(const PreparedGlyph& glyph, const MaskView& target);
+
+    // prepare()'s box alone.
     Expected<GlyphBox> measure(GlyphId gid, const GlyphRenderOptions& options);
-    // Renders into `target`, whose size must be at least the measured box (width × 3 bytes in LCD
-    // modes); the glyph goes to its top-left corner, the rest of `target` is left untouched.
+    // prepare() then draw(): one outline load. Errors as the two.
     Expected<GlyphBox> render(GlyphId gid, const GlyphRenderOptions& options,
                               const MaskView& target);
 
 private:
     Font* font_;
     Rasterizer raster_;
-    GlyphOutline outline_;   // reused
 };
 
 // A rendered glyph owned by a cache: its box and pixels (rows packed: stride = width, or
@@ -75,9 +114,9 @@ struct GlyphCacheStats {
     std::size_t bytes = 0, entries = 0;
 };
 
-// Glyph bitmaps keyed by (font id, size, variation coordinates, glyph id, subpixel bin, render
-// mode), rendered once and blended many times. The subpixel x offset is quantized to
-// kSubpixelBins bins. Memory is bounded by max_bytes (least recently used entries are evicted).
+// Glyph bitmaps keyed by (font id, glyph id, subpixel bins and every option that changes the
+// pixels: size, hinting, box mode and every FillOptions field but the origin), rendered once and blended many times. The pen offset is quantized to kSubpixelBins
+// bins per axis. Memory is bounded by max_bytes (least recently used entries are evicted).
 // A pointer from get() stays valid until the next get() or clear().
 inline constexpr int kSubpixelBins = 4;
 class GlyphCache {
@@ -89,8 +128,9 @@ public:
     GlyphCache& operator=(const GlyphCache&) = delete;
     ~GlyphCache();
 
-    // `font_id` distinguishes fonts (and variation instances) the caller renders with; the
-    // subpixel_x of `options` is quantized to a bin before lookup and rendering.
+    // `font_id` distinguishes fonts (and variation instances) the caller renders with. Each
+    // component of `options.offset_px` is quantized to a bin of [0, 1) before lookup and
+    // rendering (a value outside [0, 1), or NaN, counts as bin 0). A miss loads the outline once.
     Expected<const CachedGlyph*> get(GlyphRasterizer& rasterizer, std::uint64_t font_id,
                                      GlyphId gid, const GlyphRenderOptions& options);
     void clear();

@@ -187,7 +187,7 @@ Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask, int thre
 // The banded gray PNG writer above, fed while the page is still being drawn: bands are deflated
 // on `workers` threads (0..kMaxPngThreads; a thread the system refuses is one fewer) as soon as
 // the caller declares their rows final, so compressing overlaps drawing (bezel render draws a
-// page of text top to bottom: TextRenderer::render_gray's rows_final callback feeds this).
+// page of text top to bottom: TextRenderer::render_gray_streaming's PageRowsSink feeds this).
 // Contract: `page` stays valid until finish() returns or the stream is destroyed; once rows
 // [0, n) are declared final the caller no longer writes them (other rows it may write at any
 // time: the workers read only final rows). The result equals encode_png_gray(page, threads)

@@ -63,6 +63,9 @@ inline constexpr std::size_t kMaxTextBytes = std::size_t{1} << 24;
 // Default bound of a GlyphCache's pixel memory (bytes of bitmaps it keeps; least recently used
 // entries are evicted past it): 16 MiB, a few thousand glyphs at text sizes.
 inline constexpr std::size_t kDefaultGlyphCacheBytes = std::size_t{1} << 24;
+// Largest |component| of a glyph's pen offset (GlyphRenderOptions::offset_px), in pixels: with the
+// outline's own extent it keeps every box coordinate, in 26.6 too, far inside int.
+inline constexpr double kMaxGlyphOffsetPx = 16384.0;
 
 // --- intersect --------------------------------------------------------------------------------
 // Deepest subdivision: parameter width 2⁻ᵏ. Pairs that still cannot be separated or isolated at

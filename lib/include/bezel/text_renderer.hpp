@@ -6,7 +6,6 @@
 #pragma once
 
 #include <cstddef>
-#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -23,9 +22,22 @@ namespace bezel {
 struct TextRenderOptions {
     ShapeOptions shape;
     LayoutOptions layout;
-    RenderMode mode = RenderMode::Gray;
+    CoverageFormat format = CoverageFormat::Gray;   // Lcd: subpixel text (RGB(A) pages only)
+    LcdOrder lcd_order = LcdOrder::Rgb;
     Rgba8 foreground{0, 0, 0, 255};
     Rgba8 background{255, 255, 255, 255};
+};
+
+// Receives the rows of a page that are finished while the rest is still drawn
+// (TextRenderer::render_gray_streaming), so a consumer can encode or send the top of the page
+// meanwhile (`bezel render` deflates PNG bands on other cores: PngGrayStream).
+class PageRowsSink {
+public:
+    virtual ~PageRowsSink() = default;
+    // Rows [0, rows) of the page will not be written again. `rows` never decreases from one call
+    // to the next, and the last call has rows = the page height. The page exists (sized) by the
+    // first call; rows_final must not write the page or resize it.
+    virtual void rows_final(int rows) = 0;
 };
 
 // Font + Shaper + GlyphRasterizer + GlyphCache for one font file: the one-call text renderer.
@@ -51,25 +63,23 @@ public:
     // The same page as one sRGB gray byte per pixel, for gray-on-gray text (what PNG and PGM
     // output of such text stores): equal to render()'s red (= green = blue) channel, pixel for
     // pixel, with a quarter of the memory to fill and blend. Errors as render(), plus a
-    // foreground or background that is not opaque gray, or a mode other than RenderMode::Gray.
+    // foreground or background that is not opaque gray, or a format other than CoverageFormat::Gray.
     Expected<Mask> render_gray(std::string_view utf8, const TextRenderOptions& options);
-    // The same page drawn into `page` (replaced by the new page before any glyph is drawn),
-    // telling rows_final(n) whenever rows [0, n) will not be written again, so a consumer can
-    // work on the finished top of the page while the rest is drawn (bezel render deflates PNG
-    // bands meanwhile: PngGrayStream). Glyphs are blended in layout order and a row is final
-    // once no glyph still to come reaches it; n never decreases, and the last call has n = the
-    // page height. rows_final must not write the page or resize it. The tops of the glyphs
-    // still to come are known before drawing, at the cost of one more glyph-cache lookup per
-    // glyph. Errors as render_gray; after an error `page` holds what was drawn.
-    Status render_gray(std::string_view utf8, const TextRenderOptions& options, Mask& page,
-                       const std::function<void(int rows)>& rows_final);
+    // render_gray's page drawn into `page` (replaced by the new page before any glyph is drawn),
+    // streamed: `rows_sink` hears of each run of rows as soon as no glyph still to come reaches
+    // it (glyphs are blended in layout order). Knowing the tops of the glyphs to come costs one
+    // more glyph-cache lookup per glyph. Errors as render_gray; after an error `page` holds what
+    // was drawn and the sink may not have heard of the last rows.
+    Status render_gray_streaming(std::string_view utf8, const TextRenderOptions& options,
+                                 Mask& page, PageRowsSink& rows_sink);
 
 private:
     struct Impl;
     template <typename Page, typename MakePage, typename Blend>
     Status draw(std::string_view utf8, const TextRenderOptions& options, Page& page,
-                MakePage&& make_page, Blend&& blend,
-                const std::function<void(int rows)>* rows_final = nullptr);
+                MakePage&& make_page, Blend&& blend, PageRowsSink* rows_sink = nullptr);
+    Status draw_gray(std::string_view utf8, const TextRenderOptions& options, Mask& page,
+                     PageRowsSink* rows_sink);
     explicit TextRenderer(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
 };

@@ -57,4 +57,11 @@ struct Font::Impl {
     font_detail::FreeTypeRenderCache render_cache;
 };
 
+namespace font_detail {
+// A Font's Impl, for the module's free functions (render_with_freetype).
+struct Access {
+    static Font::Impl& impl(Font& font) { return *font.impl_; }
+};
+}  // namespace font_detail
+
 }  // namespace bezel

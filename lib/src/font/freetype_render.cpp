@@ -1,5 +1,5 @@
-// Font::render_with_freetype: FreeType's smooth rasterizer on the unhinted outline, for
-// comparisons and benchmarks (`bezel bench`).
+// render_with_freetype (bezel/freetype_reference.hpp): FreeType's smooth rasterizer on the unhinted
+// outline, for comparisons and benchmarks (`bezel bench`).
 //
 // It does what tools/bench/raster_bench.cpp times for FreeType: the glyph loaded at the size
 // with FT_LOAD_NO_HINTING (FreeType scales to 26.6, rounding every point to 1/64 px), translated
@@ -21,6 +21,7 @@
 #include <cstring>
 #include <string>
 
+#include "bezel/freetype_reference.hpp"
 #include "font/font_impl.hpp"
 #include "font/ft_error.hpp"
 
@@ -60,16 +61,17 @@ void current_coords(FT_Face face, font_detail::FreeTypeRenderCache& c, std::vect
 
 }  // namespace
 
-Status Font::render_with_freetype(GlyphId gid, const OutlineOptions& options,
-                                  const MaskView& target, Vec2 origin) {
-    const FT_Face face = impl_->face.get();
-    const std::string& file = impl_->file;
+Status render_with_freetype(Font& font, GlyphId gid, const OutlineOptions& options,
+                            const MaskView& target, Vec2 origin) {
+    auto& impl = font_detail::Access::impl(font);
+    const FT_Face face = impl.face.get();
+    const std::string& file = impl.file;
     if (!(options.size_px > 0.0 && options.size_px <= kMaxFontSizePx))
         return Error{file + ": font size " + number(options.size_px) + " px out of range (0, " +
                      number(kMaxFontSizePx) + "]"};
-    if (gid >= glyph_count())
+    if (gid >= font.glyph_count())
         return Error{file + ": glyph id " + std::to_string(gid) + " out of range (the font has " +
-                     std::to_string(glyph_count()) + " glyphs)"};
+                     std::to_string(font.glyph_count()) + " glyphs)"};
     const std::string label = file + ": glyph " + std::to_string(gid);
     const int W = target.width, H = target.height;
     if (W < 0 || H < 0 || W > kMaxFreeTypeTargetPx || H > kMaxFreeTypeTargetPx)
@@ -86,19 +88,19 @@ Status Font::render_with_freetype(GlyphId gid, const OutlineOptions& options,
                      ") is not finite or beyond " + number(kMaxFreeTypeOriginPx) + " px"};
     if (!FT_IS_SCALABLE(face)) return Error{label + ": the font has no outlines (bitmap only)"};
 
-    font_detail::FreeTypeRenderCache& c = impl_->render_cache;
+    font_detail::FreeTypeRenderCache& c = impl.render_cache;
     const FT_F26Dot6 size = std::max<FT_F26Dot6>(1, std::lround(options.size_px * 64.0));
     std::vector<FT_Fixed> coords;
     current_coords(face, c, coords);
     if (!c.valid || c.gid != gid || c.size_26_6 != size || c.coords != coords) {
         c.valid = false;
-        if (size != impl_->char_size_26_6) {
+        if (size != impl.char_size_26_6) {
             if (FT_Error e = FT_Set_Char_Size(face, 0, size, 72, 72)) {
-                impl_->char_size_26_6 = 0;
+                impl.char_size_26_6 = 0;
                 return Error{label + ": cannot set size " + number(options.size_px) +
                              " px: " + font_detail::ft_error_text(e)};
             }
-            impl_->char_size_26_6 = size;
+            impl.char_size_26_6 = size;
         }
         if (FT_Error e = FT_Load_Glyph(face, gid, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP))
             return Error{label + ": " + font_detail::ft_error_text(e)};
@@ -151,7 +153,7 @@ Status Font::render_with_freetype(GlyphId gid, const OutlineOptions& options,
     FT_Raster_Params params{};
     params.target = &bm;
     params.flags = FT_RASTER_FLAG_AA;
-    if (FT_Error e = FT_Outline_Render(impl_->library.get(), &outline, &params))
+    if (FT_Error e = FT_Outline_Render(impl.library.get(), &outline, &params))
         return Error{label + ": FreeType's rasterizer failed: " + font_detail::ft_error_text(e)};
     return ok_status();
 }

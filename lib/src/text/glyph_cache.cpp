@@ -9,6 +9,7 @@
 // No allocation once warm: hits touch only the table and the list; a miss that evicts reuses the
 // last evicted slot's pixel buffer (glyphs of one size are of similar sizes), slots are recycled
 // through a free list, and the table is rehashed only while the number of entries grows.
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -28,13 +29,18 @@ struct Key {
     std::uint64_t font_id;
     std::uint64_t size_bits;       // the double's bit pattern: sizes compare exactly
     std::uint64_t tolerance_bits;
+    std::uint64_t flatness_bits;   // ClassicFlatness's ε (the tolerance's counterpart there)
     GlyphId gid;
-    std::uint8_t bin_x, bin_y, mode, rule_overlap;
+    std::uint8_t bin_x, bin_y, coverage, rule_overlap;   // coverage: format and LCD order
+    std::uint8_t outline_box;   // hinting, box mode and flattening method
+    std::array<std::uint8_t, 5> lcd_filter;
 
     bool operator==(const Key& o) const {
         return font_id == o.font_id && size_bits == o.size_bits &&
-               tolerance_bits == o.tolerance_bits && gid == o.gid && bin_x == o.bin_x &&
-               bin_y == o.bin_y && mode == o.mode && rule_overlap == o.rule_overlap;
+               tolerance_bits == o.tolerance_bits && flatness_bits == o.flatness_bits &&
+               gid == o.gid && bin_x == o.bin_x && bin_y == o.bin_y && coverage == o.coverage &&
+               rule_overlap == o.rule_overlap && outline_box == o.outline_box &&
+               lcd_filter == o.lcd_filter;
     }
 };
 
@@ -57,8 +63,12 @@ std::uint64_t hash_key(const Key& k) {
     std::uint64_t h = mix(k.font_id ^ 0x9e3779b97f4a7c15ULL);
     h = mix(h ^ k.size_bits);
     h = mix(h ^ k.tolerance_bits);
+    h = mix(h ^ k.flatness_bits);
+    std::uint64_t filter = k.outline_box;
+    for (std::uint8_t tap : k.lcd_filter) filter = filter << 8 | tap;
+    h = mix(h ^ filter);
     return mix(h ^ (std::uint64_t{k.gid} << 32 | std::uint64_t{k.bin_x} << 24 |
-                    std::uint64_t{k.bin_y} << 16 | std::uint64_t{k.mode} << 8 | k.rule_overlap));
+                    std::uint64_t{k.bin_y} << 16 | std::uint64_t{k.coverage} << 8 | k.rule_overlap));
 }
 
 // floor(v · bins) for v in [0, 1); anything else (NaN, out of range) → bin 0.
@@ -183,17 +193,23 @@ Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::u
                                              GlyphId gid, const GlyphRenderOptions& options) {
     Impl& c = *impl_;
     GlyphRenderOptions o = options;
-    const std::uint8_t bx = bin_of(options.subpixel_x), by = bin_of(options.subpixel_y);
-    o.subpixel_x = static_cast<double>(bx) / kSubpixelBins;
-    o.subpixel_y = static_cast<double>(by) / kSubpixelBins;
+    const std::uint8_t bx = bin_of(options.offset_px.x), by = bin_of(options.offset_px.y);
+    o.offset_px = {static_cast<double>(bx) / kSubpixelBins, static_cast<double>(by) / kSubpixelBins};
+    const FillOptions& f = o.fill;
     const Key key{font_id,
                   bits(o.size_px),
-                  bits(o.tolerance_px),
+                  bits(f.flatten.tolerance_px),
+                  bits(f.flatten.classic_flatness_epsilon),
                   gid,
                   bx,
                   by,
-                  static_cast<std::uint8_t>(o.mode),
-                  static_cast<std::uint8_t>(static_cast<int>(o.rule) << 4 | static_cast<int>(o.overlap))};
+                  static_cast<std::uint8_t>(static_cast<int>(f.format) |
+                                            static_cast<int>(f.lcd_order) << 1),
+                  static_cast<std::uint8_t>(static_cast<int>(f.rule) << 4 | static_cast<int>(f.overlap)),
+                  static_cast<std::uint8_t>(static_cast<int>(o.hinting) |
+                                            static_cast<int>(o.box) << 1 |
+                                            static_cast<int>(f.flatten.method) << 2),
+                  f.lcd_filter.taps};
 
     if (std::size_t pos = c.find_pos(key); pos != SIZE_MAX) {
         std::int32_t s = c.table[pos];
@@ -206,17 +222,18 @@ Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::u
     }
     ++c.stats.misses;
 
-    auto box = rasterizer.measure(gid, o);
-    if (!box) return box.error();
-    const int row_bytes = box->width * (o.mode == RenderMode::Gray ? 1 : 3);
-    const std::size_t need = static_cast<std::size_t>(row_bytes) * static_cast<std::size_t>(box->height);
+    // The one outline load of a miss: prepare() measures, draw() fills the buffer sized here.
+    auto glyph = rasterizer.prepare(gid, o);
+    if (!glyph) return glyph.error();
+    const GlyphBox& box = glyph->box;
+    const int row_bytes = box.width * (f.format == CoverageFormat::Lcd ? 3 : 1);
+    const std::size_t need = static_cast<std::size_t>(row_bytes) * static_cast<std::size_t>(box.height);
 
     if (need + kEntryOverheadBytes > c.max_bytes) {
         c.oversized.resize(need);
-        MaskView view{c.oversized.data(), row_bytes, box->height, row_bytes};
-        auto drawn = rasterizer.render(gid, o, view);
-        if (!drawn) return drawn.error();
-        c.oversized_glyph = {*drawn, ConstMaskView(view)};
+        MaskView view{c.oversized.data(), row_bytes, box.height, row_bytes};
+        if (Status drawn = rasterizer.draw(*glyph, view); !drawn) return drawn.error();
+        c.oversized_glyph = {box, ConstMaskView(view)};
         return &c.oversized_glyph;
     }
 
@@ -239,14 +256,13 @@ Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::u
     slot.pixels.resize(need);
     if (slot.pixels.capacity() + kEntryOverheadBytes + c.stats.bytes > c.max_bytes)
         slot.pixels.shrink_to_fit();   // a reused buffer much larger than needed
-    MaskView view{slot.pixels.data(), row_bytes, box->height, row_bytes};
-    auto drawn = rasterizer.render(gid, o, view);
-    if (!drawn) {
+    MaskView view{slot.pixels.data(), row_bytes, box.height, row_bytes};
+    if (Status drawn = rasterizer.draw(*glyph, view); !drawn) {
         c.release(s);
         return drawn.error();
     }
     slot.key = key;
-    slot.glyph = {*drawn, ConstMaskView(view)};
+    slot.glyph = {box, ConstMaskView(view)};
     c.table_insert(s);
     c.push_front(s);
     c.stats.bytes += c.slot_bytes(slot);

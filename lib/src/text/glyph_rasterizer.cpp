@@ -1,13 +1,15 @@
 // GlyphRasterizer: one glyph's outline from the Font, filled by bezel's Rasterizer into a caller
 // buffer, placed by FreeType's bitmap_left / bitmap_top convention.
 //
-// The box. With the pen at (sx, sy) (the subpixel offset, pixels, y down) and the outline's tight
-// bounds [x0, x1] × [y0, y1] (y down), the bitmap covers
-//   columns floor(x0 + sx) .. ceil(x1 + sx),   rows floor(y0 + sy) .. ceil(y1 + sy),
-// so left = floor(x0 + sx) and top = −floor(y0 + sy) (rows above the baseline, FreeType's
-// bitmap_top). FreeType rounds its control box the same way; ours is the tight box of the
-// curves, so it is never larger. LCD modes add kLcdPaddingPx columns on each side for the
-// filter's spread.
+// The pen sits at the offset (dx, dy) (pixels, y down) from the glyph's whole-pixel origin. A box
+// [x0, x1] × [y0, y1] (y down) of whole pixels around the ink at the pen gives left = x0 (columns
+// from the origin to the first column) and top = −y0 (rows above the baseline, FreeType's
+// bitmap_top); bitmap pixel (i, j) is at (left + i, −top + j) from the origin, so the outline
+// moves by (dx − left, dy + top) into the bitmap. LCD modes add kLcdPaddingPx columns on each
+// side for the filter's spread. Two ways to find the box (GlyphBoxMode):
+//   Tight     columns floor(bx0 + dx) .. ceil(bx1 + dx) of the curves' tight bounds b, rows alike;
+//   FreeType  the control box and the offset in 26.6 fixed point, floor/ceil, as FreeType's
+//             ft_glyphslot_preset_bitmap (y up there: bitmap_top is the ceiling of the box's top).
 #include <cmath>
 #include <string>
 
@@ -17,78 +19,123 @@ namespace bezel {
 
 namespace {
 
-bool is_lcd(RenderMode mode) { return mode != RenderMode::Gray; }
+bool is_lcd(const GlyphRenderOptions& o) { return o.fill.format == CoverageFormat::Lcd; }
+
+std::string glyph_label(GlyphId gid) { return "glyph " + std::to_string(gid); }
 
 Status check_options(GlyphId gid, const GlyphRenderOptions& o) {
-    auto in_unit = [](double v) { return v >= 0.0 && v < 1.0; };  // NaN fails
-    if (!in_unit(o.subpixel_x) || !in_unit(o.subpixel_y))
-        return Error{"glyph " + std::to_string(gid) + ": subpixel offset (" +
-                     std::to_string(o.subpixel_x) + ", " + std::to_string(o.subpixel_y) +
-                     ") is outside [0, 1)"};
+    auto in_range = [](double v) { return std::fabs(v) <= kMaxGlyphOffsetPx; };  // NaN fails
+    if (!in_range(o.offset_px.x) || !in_range(o.offset_px.y))
+        return Error{glyph_label(gid) + ": pen offset (" + std::to_string(o.offset_px.x) + ", " +
+                     std::to_string(o.offset_px.y) + ") is not finite or beyond ±" +
+                     std::to_string(static_cast<int>(kMaxGlyphOffsetPx)) +
+                     " px (kMaxGlyphOffsetPx)"};
+    if (o.fill.origin.x != 0 || o.fill.origin.y != 0)
+        return Error{glyph_label(gid) + ": fill.origin must be zero (offset_px places the pen)"};
     return ok_status();
 }
 
-// The box of an outline whose bounds are `b`, at the options' subpixel offset. The pixel extent
-// is checked against kMaxBitmapDim in double before any conversion to int.
-Expected<GlyphBox> box_of(GlyphId gid, const GlyphOutline& outline, const GlyphRenderOptions& o) {
-    GlyphBox box;
-    box.advance_px = outline.metrics.advance_px;
-    Rect b = outline.path.bounds();
-    if (b.is_empty()) return box;
-    double x0 = std::floor(b.x0 + o.subpixel_x), x1 = std::ceil(b.x1 + o.subpixel_x);
-    double y0 = std::floor(b.y0 + o.subpixel_y), y1 = std::ceil(b.y1 + o.subpixel_y);
+// The tight box of `path` at the offset. The pixel extent is checked against kMaxBitmapDim in
+// double before any conversion to int.
+Status tight_box(GlyphId gid, const Path& path, const GlyphRenderOptions& o, GlyphBox& box) {
+    const Rect b = path.bounds();
+    if (b.is_empty()) return ok_status();
+    const double x0 = std::floor(b.x0 + o.offset_px.x), x1 = std::ceil(b.x1 + o.offset_px.x);
+    const double y0 = std::floor(b.y0 + o.offset_px.y), y1 = std::ceil(b.y1 + o.offset_px.y);
     if (!(x1 - x0 <= kMaxBitmapDim && y1 - y0 <= kMaxBitmapDim && std::fabs(x0) <= kMaxBitmapDim &&
           std::fabs(y0) <= kMaxBitmapDim))
-        return Error{"glyph " + std::to_string(gid) + ": bitmap of " + std::to_string(x1 - x0) +
-                     "x" + std::to_string(y1 - y0) + " px exceeds kMaxBitmapDim (" +
+        return Error{glyph_label(gid) + ": bitmap of " + std::to_string(x1 - x0) + "x" +
+                     std::to_string(y1 - y0) + " px exceeds kMaxBitmapDim (" +
                      std::to_string(kMaxBitmapDim) + ")"};
-    int pad = is_lcd(o.mode) ? kLcdPaddingPx : 0;
+    const int pad = is_lcd(o) ? kLcdPaddingPx : 0;
     box.left = static_cast<int>(x0) - pad;
     box.top = -static_cast<int>(y0);
     box.width = static_cast<int>(x1 - x0) + 2 * pad;
     box.height = static_cast<int>(y1 - y0);
-    return box;
+    return ok_status();
+}
+
+// A coordinate in FreeType's 26.6 fixed point (what its control box is made of).
+long long to_26_6(double px) { return std::llround(px * 64.0); }
+long long floor_px(long long v) { return v >= 0 ? v / 64 : -((-v + 63) / 64); }
+long long ceil_px(long long v) { return -floor_px(-v); }
+
+// FreeType's box of the control box `b` (y down) at the offset.
+Status freetype_box(GlyphId gid, const Rect& b, const GlyphRenderOptions& o, GlyphBox& box) {
+    if (b.is_empty()) return ok_status();
+    // In FreeType's y-up frame: the box's bottom is −b.y1, its top −b.y0, the offset (dx, −dy).
+    const long long ox = to_26_6(o.offset_px.x), oy = to_26_6(-o.offset_px.y);
+    const long long x0 = floor_px(to_26_6(b.x0) + ox), x1 = ceil_px(to_26_6(b.x1) + ox);
+    const long long y0 = floor_px(to_26_6(-b.y1) + oy), y1 = ceil_px(to_26_6(-b.y0) + oy);
+    const long long pad = is_lcd(o) ? kLcdPaddingPx : 0;
+    const long long w = x1 - x0 + 2 * pad, h = y1 - y0;
+    if (w > kMaxBitmapDim || h > kMaxBitmapDim)
+        return Error{glyph_label(gid) + ": a bitmap of " + std::to_string(w) + "x" +
+                     std::to_string(h) + " px is larger than " + std::to_string(kMaxBitmapDim) +
+                     " (kMaxBitmapDim)"};
+    box.left = static_cast<int>(x0 - pad);
+    box.top = static_cast<int>(y1);
+    box.width = static_cast<int>(w);
+    box.height = static_cast<int>(h);
+    return ok_status();
 }
 
 }  // namespace
 
 GlyphRasterizer::GlyphRasterizer(Font& font) : font_(&font) {}
 
-Expected<GlyphBox> GlyphRasterizer::measure(GlyphId gid, const GlyphRenderOptions& options) {
+Expected<PreparedGlyph> GlyphRasterizer::prepare(GlyphId gid, const GlyphRenderOptions& options) {
     if (auto ok = check_options(gid, options); !ok) return ok.error();
-    auto outline = font_->outline(gid, {options.size_px, false});
+    auto outline = font_->outline(gid, {options.size_px, options.hinting});
     if (!outline) return outline.error();
-    outline_ = std::move(*outline);
-    return box_of(gid, outline_, options);
+    PreparedGlyph glyph;
+    glyph.gid = gid;
+    glyph.options = options;
+    glyph.box.advance_px = outline->metrics.advance_px;
+    // Glyphs the font marks as overlapping get the accurate overlap resolution regardless.
+    glyph.box.overlap =
+        outline->overlapping_contours ? OverlapMode::Accurate : options.fill.overlap;
+    Status boxed = options.box == GlyphBoxMode::FreeType
+                       ? freetype_box(gid, outline->metrics.bounds_px, options, glyph.box)
+                       : tight_box(gid, outline->path, options, glyph.box);
+    if (!boxed) return boxed.error();
+    glyph.path = std::move(outline->path);
+    return glyph;
+}
+
+Status GlyphRasterizer::draw(const PreparedGlyph& glyph, const MaskView& target) {
+    const GlyphBox& box = glyph.box;
+    const GlyphRenderOptions& o = glyph.options;
+    const int bytes_per_px = is_lcd(o) ? 3 : 1;
+    if (box.width == 0 || box.height == 0) return ok_status();
+    if (target.width < box.width * bytes_per_px || target.height < box.height || !target.data)
+        return Error{glyph_label(glyph.gid) + ": target " + std::to_string(target.width) + "x" +
+                     std::to_string(target.height) + " is smaller than the glyph's " +
+                     std::to_string(box.width * bytes_per_px) + "x" + std::to_string(box.height) +
+                     " bytes"};
+    const Affine to_bitmap =
+        Affine::translate({o.offset_px.x - box.left, o.offset_px.y + box.top});
+    const MaskView corner = target.sub(0, 0, box.width * bytes_per_px, box.height);
+    FillOptions fill = o.fill;
+    fill.overlap = box.overlap;
+    // The one place glyphs meet the Rasterizer.
+    Status filled = raster_.fill_path(glyph.path, to_bitmap, corner, fill);
+    if (!filled) return Error{glyph_label(glyph.gid) + ": " + filled.error().message};
+    return ok_status();
+}
+
+Expected<GlyphBox> GlyphRasterizer::measure(GlyphId gid, const GlyphRenderOptions& options) {
+    auto glyph = prepare(gid, options);
+    if (!glyph) return glyph.error();
+    return glyph->box;
 }
 
 Expected<GlyphBox> GlyphRasterizer::render(GlyphId gid, const GlyphRenderOptions& options,
                                            const MaskView& target) {
-    auto box = measure(gid, options);
-    if (!box) return box;
-    const int bytes_per_px = is_lcd(options.mode) ? 3 : 1;
-    if (box->width == 0 || box->height == 0) return box;
-    if (target.width < box->width * bytes_per_px || target.height < box->height || !target.data)
-        return Error{"glyph " + std::to_string(gid) + ": target " + std::to_string(target.width) +
-                     "x" + std::to_string(target.height) + " is smaller than the glyph's " +
-                     std::to_string(box->width * bytes_per_px) + "x" +
-                     std::to_string(box->height) + " bytes"};
-    // Pen at (left, −top) from the bitmap's corner: bitmap pixel (i, j) is page pixel
-    // (pen + left + i, pen − top + j), so the outline moves by (sx − left, sy + top).
-    const Affine to_bitmap = Affine::translate(
-        {options.subpixel_x - box->left, options.subpixel_y + box->top});
-    // Glyphs the font marks as overlapping get the accurate overlap resolution regardless.
-    const OverlapMode overlap =
-        outline_.overlapping_contours ? OverlapMode::Accurate : options.overlap;
-    FlattenOptions flatten = raster_flatten_defaults();
-    flatten.tolerance_px = options.tolerance_px;
-    MaskView glyph = target.sub(0, 0, box->width * bytes_per_px, box->height);
-    const FillOptions fill{options.rule, overlap, flatten, {},
-                           is_lcd(options.mode) ? CoverageFormat::Lcd : CoverageFormat::Gray,
-                           options.mode == RenderMode::LcdBgr ? LcdOrder::Bgr : LcdOrder::Rgb};
-    Status filled = raster_.fill_path(outline_.path, to_bitmap, glyph, fill);
-    if (!filled) return Error{"glyph " + std::to_string(gid) + ": " + filled.error().message};
-    return box;
+    auto glyph = prepare(gid, options);
+    if (!glyph) return glyph.error();
+    if (Status drawn = draw(*glyph, target); !drawn) return drawn.error();
+    return glyph->box;
 }
 
 }  // namespace bezel

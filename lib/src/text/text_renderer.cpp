@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -82,8 +81,7 @@ GlyphCache& TextRenderer::cache() { return impl_->cache; }
 // RGBA and the gray page.
 template <typename Page, typename MakePage, typename Blend>
 Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& options, Page& page,
-                          MakePage&& make_page, Blend&& blend,
-                          const std::function<void(int rows)>* rows_final) {
+                          MakePage&& make_page, Blend&& blend, PageRowsSink* rows_sink) {
     Impl& r = *impl_;
     if (!same_variations(options.shape.variations, r.variations)) {
         if (auto set = r.font.set_variations(options.shape.variations); !set) {
@@ -108,14 +106,15 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
 
     GlyphRenderOptions glyph;
     glyph.size_px = options.shape.size_px;
-    glyph.mode = options.mode;
+    glyph.fill.format = options.format;
+    glyph.fill.lcd_order = options.lcd_order;
     // The cached glyph at g's pen, with its top-left pixel; null for a pen far off the page (a
     // huge margin is refused by the size check above; this guards the int conversions) or an
     // empty glyph.
     auto look_up = [&](const PlacedGlyph& g, int& x, int& y) -> Expected<const CachedGlyph*> {
         const double quarters = std::floor(g.x_px * kSubpixelBins + 0.5);
         const double column = std::floor(quarters / kSubpixelBins);
-        glyph.subpixel_x = (quarters - column * kSubpixelBins) / kSubpixelBins;
+        glyph.offset_px.x = (quarters - column * kSubpixelBins) / kSubpixelBins;
         const double row = std::floor(g.y_px + 0.5);
         if (std::fabs(column) > kMaxImageDim * 2.0 || std::fabs(row) > kMaxImageDim * 2.0)
             return nullptr;
@@ -130,7 +129,7 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     const std::vector<PlacedGlyph>& glyphs = layout->glyphs;
     // first_row[i]: the top row of glyphs i.. (page_h when none reaches the page).
     std::vector<int> first_row;
-    if (rows_final != nullptr) {
+    if (rows_sink != nullptr) {
         first_row.assign(glyphs.size() + 1, page_h);
         for (std::size_t i = glyphs.size(); i-- > 0;) {
             int x = 0, y = page_h;
@@ -145,12 +144,12 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
         auto c = look_up(glyphs[i], x, y);
         if (!c) return c.error();
         if (*c != nullptr) blend(page, (*c)->mask, x, y);
-        if (rows_final != nullptr && first_row[i + 1] > reported) {
+        if (rows_sink != nullptr && first_row[i + 1] > reported) {
             reported = first_row[i + 1];
-            (*rows_final)(reported);
+            rows_sink->rows_final(reported);
         }
     }
-    if (rows_final != nullptr) (*rows_final)(page_h);
+    if (rows_sink != nullptr) rows_sink->rows_final(page_h);
     return ok_status();
 }
 
@@ -159,7 +158,7 @@ Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOpti
     auto drawn = draw<Image>(
         utf8, options, out, [&](int w, int h) { return Image(w, h, options.background); },
         [&](Image& onto, ConstMaskView mask, int x, int y) {
-            if (options.mode == RenderMode::Gray)
+            if (options.format == CoverageFormat::Gray)
                 blend_mask(onto, mask, x, y, options.foreground);
             else
                 // LCD coverage is stored R, G, B per pixel whatever the panel's order (a BGR
@@ -172,16 +171,21 @@ Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOpti
 
 Expected<Mask> TextRenderer::render_gray(std::string_view utf8, const TextRenderOptions& options) {
     Mask out;
-    auto drawn = render_gray(utf8, options, out, {});
+    auto drawn = draw_gray(utf8, options, out, nullptr);
     if (!drawn) return drawn.error();
     return out;
 }
 
-Status TextRenderer::render_gray(std::string_view utf8, const TextRenderOptions& options,
-                                 Mask& page, const std::function<void(int rows)>& rows_final) {
+Status TextRenderer::render_gray_streaming(std::string_view utf8, const TextRenderOptions& options,
+                                           Mask& page, PageRowsSink& rows_sink) {
+    return draw_gray(utf8, options, page, &rows_sink);
+}
+
+Status TextRenderer::draw_gray(std::string_view utf8, const TextRenderOptions& options, Mask& page,
+                               PageRowsSink* rows_sink) {
     const Rgba8 fg = options.foreground, bg = options.background;
-    if (options.mode != RenderMode::Gray)
-        return Error{"render_gray: needs RenderMode::Gray (LCD coverage is per channel)"};
+    if (options.format != CoverageFormat::Gray)
+        return Error{"render_gray: needs CoverageFormat::Gray (LCD coverage is per channel)"};
     if (!(fg.r == fg.g && fg.g == fg.b && bg.r == bg.g && bg.g == bg.b && fg.a == 255 &&
           bg.a == 255))
         return Error{"render_gray: needs opaque gray foreground and background colours"};
@@ -195,7 +199,7 @@ Status TextRenderer::render_gray(std::string_view utf8, const TextRenderOptions&
         [&](Mask& onto, ConstMaskView mask, int x, int y) {
             blend_mask_gray(onto.view(), mask, x, y, fg.r);
         },
-        rows_final ? &rows_final : nullptr);
+        rows_sink);
 }
 
 }  // namespace bezel
