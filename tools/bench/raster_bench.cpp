@@ -342,6 +342,11 @@ int main(int argc, char** argv) {
 
     FT_Library lib;
     if (FT_Init_FreeType(&lib)) { std::fprintf(stderr, "bench_raster: FreeType init failed\n"); return 1; }
+    // The peer's version as loaded at run time (./dev bench can point it at another build).
+    FT_Int ft_major = 0, ft_minor = 0, ft_patch = 0;
+    FT_Library_Version(lib, &ft_major, &ft_minor, &ft_patch);
+    std::fprintf(stderr, "bench_raster: FreeType %d.%d.%d, bezel kernels %s\n", ft_major, ft_minor,
+                 ft_patch, bezel::raster_kernel_name());
     std::vector<Face> faces;
     for (const std::string& file : opt.fonts) {
         Face f;
