@@ -238,7 +238,7 @@ std::unique_ptr<Contender> contender(const std::vector<Glyph>& glyphs, F render)
 
 // Times the contenders in alternation: run r times each of them once, starting from a different
 // one each time (r mod their count). On a shared or virtual machine the speed drifts by tens of
-// percent within seconds (2026-12-02: 33 % steal time); timed one after the other, a slow
+// percent within seconds (up to a third of the time stolen); timed one after the other, a slow
 // stretch would land on one renderer and move the ratio, while interleaved runs sample the same
 // stretches for each, and the minimum over runs keeps each one's quiet moments.
 void time_interleaved(const std::vector<std::unique_ptr<Contender>>& cs, std::size_t glyphs, int reps) {
