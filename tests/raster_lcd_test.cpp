@@ -7,28 +7,16 @@
 
 #include "bezel/image.hpp"
 #include "bezel/raster.hpp"
+#include "support/shapes.hpp"
 
 namespace bezel {
 namespace {
 
-void add_rect(Path& p, double x0, double y0, double x1, double y1) {
-    p.move_to({x0, y0});
-    p.line_to({x1, y0});
-    p.line_to({x1, y1});
-    p.line_to({x0, y1});
-    p.close();
-}
+using test::add_rect;
 
 Path circle(Point c, double radius) {
-    // Four cubic quarter arcs (k = 4/3·(√2 − 1)).
-    const double k = 0.5522847498 * radius;
     Path p;
-    p.move_to({c.x + radius, c.y});
-    p.cubic_to({c.x + radius, c.y + k}, {c.x + k, c.y + radius}, {c.x, c.y + radius});
-    p.cubic_to({c.x - k, c.y + radius}, {c.x - radius, c.y + k}, {c.x - radius, c.y});
-    p.cubic_to({c.x - radius, c.y - k}, {c.x - k, c.y - radius}, {c.x, c.y - radius});
-    p.cubic_to({c.x + k, c.y - radius}, {c.x + radius, c.y - k}, {c.x + radius, c.y});
-    p.close();
+    test::add_circle(p, c, radius);
     return p;
 }
 

@@ -13,27 +13,13 @@
 
 #include "bezel/diagnostics.hpp"
 #include "bezel/raster.hpp"
+#include "support/shapes.hpp"
 
 namespace bezel {
 namespace {
 
-void add_rect(Path& p, double x0, double y0, double x1, double y1) {
-    p.move_to({x0, y0});
-    p.line_to({x1, y0});
-    p.line_to({x1, y1});
-    p.line_to({x0, y1});
-    p.close();
-}
-
-void add_circle(Path& p, Point c, double r) {
-    const double k = 0.5522847498 * r;
-    p.move_to({c.x + r, c.y});
-    p.cubic_to({c.x + r, c.y + k}, {c.x + k, c.y + r}, {c.x, c.y + r});
-    p.cubic_to({c.x - k, c.y + r}, {c.x - r, c.y + k}, {c.x - r, c.y});
-    p.cubic_to({c.x - r, c.y - k}, {c.x - k, c.y - r}, {c.x, c.y - r});
-    p.cubic_to({c.x + k, c.y - r}, {c.x + r, c.y - k}, {c.x + r, c.y});
-    p.close();
-}
+using test::add_circle;
+using test::add_rect;
 
 // Two overlapping discs and a square: curves, and overlaps for OverlapMode::Accurate to resolve.
 Path shapes() {
