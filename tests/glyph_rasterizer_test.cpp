@@ -285,6 +285,11 @@ TEST(GlyphRasterizer, RefusesBadInput) {
         EXPECT_NE(box.error().message.find("glyph " + std::to_string(gid)), std::string::npos);
     }
     o.offset_px.x = 0;
+    o.fill.origin = {0.5, 0};   // the pen is offset_px's to place, not the fill's
+    auto moved = rasterizer.measure(gid, o);
+    ASSERT_FALSE(moved);
+    EXPECT_NE(moved.error().message.find("fill.origin"), std::string::npos);
+    o.fill.origin = {};
     std::uint8_t small[4] = {};
     auto box = rasterizer.render(gid, o, MaskView{small, 2, 2, 2});
     ASSERT_FALSE(box);

@@ -82,8 +82,8 @@ public:
 
     // Loads the outline of `gid` (one Font::outline call) and computes its box by
     // `options.box`, plus kLcdPaddingPx display pixels on each side in LCD modes. Errors name the
-    // glyph: an offset that is not finite or beyond kMaxGlyphOffsetPx, a box larger than
-    // kMaxBitmapDim, and Font::outline's (size out of range, gid ≥ glyph_count(), …).
+    // glyph: an offset that is not finite or beyond kMaxGlyphOffsetPx, a nonzero fill.origin, a
+    // box larger than kMaxBitmapDim, and Font::outline's (size out of range, gid ≥ glyph_count(), …).
     Expected<PreparedGlyph> prepare(GlyphId gid, const GlyphRenderOptions& options);
     // Fills `glyph` into the top-left box.width × box.height corner of `target` (width × 3 bytes
     // in LCD modes), writing every byte of that corner and nothing else. A glyph with an empty
@@ -115,8 +115,9 @@ struct GlyphCacheStats {
 };
 
 // Glyph bitmaps keyed by (font id, glyph id, subpixel bins and every option that changes the
-// pixels: size, hinting, box mode and every FillOptions field but the origin), rendered once and blended many times. The pen offset is quantized to kSubpixelBins
-// bins per axis. Memory is bounded by max_bytes (least recently used entries are evicted).
+// pixels: size, hinting, box mode and every FillOptions field but the origin), rendered once and
+// blended many times. The pen offset is quantized to kSubpixelBins bins per axis. Memory is
+// bounded by max_bytes (least recently used entries are evicted).
 // A pointer from get() stays valid until the next get() or clear().
 inline constexpr int kSubpixelBins = 4;
 class GlyphCache {
