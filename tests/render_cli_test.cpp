@@ -139,6 +139,21 @@ struct BadCase {
     std::string mention;   // the error line names this
 };
 
+TEST(RenderCli, LoneWordThatIsNoFileIsTheTextInTheDefaultFont) {
+    TempDir dir("bezel-render-cli");
+    auto word = run_bezel({"render", "Hello", "-o", "word.png"}, dir.path());
+    ASSERT_EQ(word.exit_code, 0) << word.err;
+    auto text = run_bezel({"render", "--text", "Hello", "-o", "text.png"}, dir.path());
+    ASSERT_EQ(text.exit_code, 0) << text.err;
+    EXPECT_EQ(slurp(dir.path() / "word.png"), slurp(dir.path() / "text.png"));
+    // A file that exists stays the font, as before.
+    auto font = run_bezel({"render", kDejaVu, "-o", "font.png"}, dir.path());
+    ASSERT_EQ(font.exit_code, 0) << font.err;
+    auto sample = run_bezel({"render", "-o", "sample.png"}, dir.path());
+    ASSERT_EQ(sample.exit_code, 0) << sample.err;
+    EXPECT_EQ(slurp(dir.path() / "font.png"), slurp(dir.path() / "sample.png"));
+}
+
 TEST(RenderCli, BadInputGivesOneErrorLineAndNoFile) {
     TempDir dir("bezel-render-cli");
     {
@@ -162,6 +177,9 @@ TEST(RenderCli, BadInputGivesOneErrorLineAndNoFile) {
         {{"render", kDejaVu, "x", "--margin", "30000", "--font-size", "300", "-o", "out.png"}, 1,
          "too large"},
         {{"render", kDejaVu, "x", "--variations", "wght=700", "-o", "out.png"}, 1, "wght"},
+        // A lone word that looks like a font path is a missing font, with a hint to --text.
+        {{"render", "missing.TTF", "-o", "out.png"}, 1, "missing.TTF: no such font file"},
+        {{"render", "fonts/Nothing", "-o", "out.png"}, 1, "--text"},
     };
     for (const BadCase& c : cases) {
         auto run = run_bezel(c.args, dir.path());

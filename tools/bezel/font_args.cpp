@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cctype>
 #include <filesystem>
 #include <sstream>
 
@@ -28,6 +29,17 @@ Expected<double> parse_font_size(const std::string& text) {
 }
 
 }  // namespace
+
+bool looks_like_font_path(const std::string& word) {
+    if (word.find('/') != std::string::npos) return true;
+    const auto dot = word.rfind('.');
+    if (dot == std::string::npos) return false;
+    std::string ext = word.substr(dot + 1);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (const char* known : {"ttf", "otf", "ttc", "otc", "woff", "woff2", "dfont", "pfb", "pfa"})
+        if (ext == known) return true;
+    return false;
+}
 
 void add_font_args(CLI::App& cmd, FontArgs& args) {
     args.file = BEZEL_DEFAULT_FONT;

@@ -35,6 +35,11 @@ void add_font_args(CLI::App& cmd, FontArgs& args);
 // "--variations: " when it checks the option).
 Expected<std::vector<VariationSetting>> parse_variations(const std::string& spec);
 
+// Whether a command-line word names a font file that is not there: it has a font file's extension
+// (.ttf, .otf, .ttc, .otc, .woff, .woff2, .dfont, .pfb, .pfa, any case) or a '/'. Such a word given
+// where FONT or TEXT could go is a missing font, not text to draw.
+bool looks_like_font_path(const std::string& word);
+
 // Opens args.file at args.face_index and applies args.variations. Errors name the file and, for
 // variations, the axis; a missing file or a directory is reported as such before FreeType sees it.
 Expected<Font> open_font(const FontArgs& args);
