@@ -90,14 +90,19 @@ std::optional<OutputFormat> parse_format(std::string_view name) {
     return std::nullopt;
 }
 
+std::string lowercase_extension(const std::string& file) {
+    std::string ext = std::filesystem::path(file).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
 Expected<std::string> pick_output_format(const std::string& format_option,
                                          const std::string& output_file,
                                          const std::vector<FormatExtension>& extensions,
                                          const std::string& fallback) {
     if (!format_option.empty()) return format_option;
     if (output_file.empty() || output_file == "-") return fallback;
-    std::string ext = std::filesystem::path(output_file).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = lowercase_extension(output_file);
     std::vector<const std::string*> listed;
     for (const FormatExtension& e : extensions) {
         if (e.extension == ext) return e.format;

@@ -70,6 +70,9 @@ struct FormatExtension {
     std::string format;      // the -O name it stands for
     bool listed = true;      // named in the unknown-extension error (false: an alias, as .ansi)
 };
+// The extension of `file` with its dot, in lower case ("a/B.PNG" → ".png"; "" when it has none).
+std::string lowercase_extension(const std::string& file);
+
 // Every subcommand's rule for its output format: -O's value when given (the subcommand checks the
 // name, mostly through CLI11), else the format the -o file's extension selects (compared
 // case-insensitively), else `fallback` (stdout: no -o, or -o -). An extension not in `extensions`

@@ -2,7 +2,6 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
-#include <cctype>
 #include <filesystem>
 #include <sstream>
 
@@ -32,11 +31,9 @@ Expected<double> parse_font_size(const std::string& text) {
 
 bool looks_like_font_path(const std::string& word) {
     if (word.find('/') != std::string::npos) return true;
-    const auto dot = word.rfind('.');
-    if (dot == std::string::npos) return false;
-    std::string ext = word.substr(dot + 1);
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    for (const char* known : {"ttf", "otf", "ttc", "otc", "woff", "woff2", "dfont", "pfb", "pfa"})
+    const std::string ext = lowercase_extension(word);
+    for (const char* known :
+         {".ttf", ".otf", ".ttc", ".otc", ".woff", ".woff2", ".dfont", ".pfb", ".pfa"})
         if (ext == known) return true;
     return false;
 }
