@@ -19,16 +19,18 @@ using test::TempDir;
 
 const std::string kDejaVu = BEZEL_FONTS_DIR "/dejavu-sans/DejaVuSans.ttf";
 
-TEST(AtlasCli, RectanglesArePaddedAndHoldTheGlyphs) {
+// Hinted or not, as --hinting says.
+void expect_padded_rectangles_holding_the_glyphs(Hinting hinting) {
     TempDir dir("bezel-atlas-cli");
     const std::string chars = "The quick brown fox, AVWQ@&g 0123456789 éß";
     auto run = run_bezel({"atlas", kDejaVu, "--chars", chars, "--font-size", "19", "-o",
-                          "atlas.png", "--json", "atlas.json"},
+                          "atlas.png", "--json", "atlas.json", "--hinting", hinting_name(hinting)},
                          dir.path());
     ASSERT_EQ(run.exit_code, 0) << run.err;
     auto texture = read_png_gray((dir.path() / "atlas.png").string());
     ASSERT_TRUE(texture) << texture.error().message;
     auto doc = nlohmann::json::parse(slurp(dir.path() / "atlas.json"));
+    EXPECT_EQ(doc["hinting"], hinting_name(hinting));
     ASSERT_EQ(doc["width"].get<int>(), texture->width());
     ASSERT_EQ(doc["height"].get<int>(), texture->height());
     const int w = texture->width();
@@ -39,6 +41,7 @@ TEST(AtlasCli, RectanglesArePaddedAndHoldTheGlyphs) {
     GlyphRasterizer rasterizer(*font);
     GlyphRenderOptions o;
     o.size_px = 19;
+    o.hinting = hinting;
     // Which rectangle (grown by the padding) claims each texture pixel.
     std::vector<int> owner(static_cast<std::size_t>(w * texture->height()), -1);
     auto code_points = decode_utf8(chars);
@@ -86,6 +89,15 @@ TEST(AtlasCli, RectanglesArePaddedAndHoldTheGlyphs) {
             for (int px = 0; px < gw; ++px)
                 ASSERT_EQ(texture->at(x + px, y + py), expected.at(px, py)) << g["char"];
     }
+}
+
+TEST(AtlasCli, RectanglesArePaddedAndHoldTheGlyphs) {
+    expect_padded_rectangles_holding_the_glyphs(Hinting::None);
+}
+
+TEST(AtlasCli, HintedRectanglesHoldTheHintedGlyphs) {
+    expect_padded_rectangles_holding_the_glyphs(Hinting::Full);
+    expect_padded_rectangles_holding_the_glyphs(Hinting::Light);
 }
 
 TEST(AtlasCli, BadInputGivesOneErrorLineAndNoFile) {

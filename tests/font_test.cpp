@@ -164,9 +164,12 @@ public:
 
     // Loads `gid` as bezel does for `options`; returns the scale from outline units to pixels.
     double load(GlyphId gid, const OutlineOptions& options) {
-        if (options.hinting) {
+        if (options.hinting != Hinting::None) {
+            const FT_Int32 mode = options.hinting == Hinting::Light  ? FT_LOAD_TARGET_LIGHT
+                                  : options.hinting == Hinting::Auto ? FT_LOAD_FORCE_AUTOHINT
+                                                                     : FT_LOAD_DEFAULT;
             EXPECT_EQ(FT_Set_Char_Size(face_, 0, std::lround(options.size_px * 64.0), 72, 72), 0);
-            EXPECT_EQ(FT_Load_Glyph(face_, gid, FT_LOAD_DEFAULT | FT_LOAD_NO_BITMAP), 0);
+            EXPECT_EQ(FT_Load_Glyph(face_, gid, mode | FT_LOAD_NO_BITMAP), 0);
             return 1.0 / 64.0;
         }
         EXPECT_EQ(FT_Load_Glyph(face_, gid,
@@ -232,16 +235,16 @@ TEST(FontOutline, EveryDejaVuGlyphMatchesFreeTypeDecompose) {
     Font font = open_or_die(kDejaVu);
     FtFace ft(kDejaVu);
     ASSERT_EQ(font.glyph_count(), 6253u);
-    expect_every_glyph_matches_freetype(font, ft, {37.5, false});
-    expect_every_glyph_matches_freetype(font, ft, {13.0, true});
+    expect_every_glyph_matches_freetype(font, ft, {37.5, Hinting::None});
+    expect_every_glyph_matches_freetype(font, ft, {13.0, Hinting::Full});
 }
 
 TEST(FontOutline, EveryCantarellGlyphMatchesFreeTypeDecompose) {
     Font font = open_or_die(kCantarell);
     FtFace ft(kCantarell);
     ASSERT_EQ(font.glyph_count(), 1322u);
-    expect_every_glyph_matches_freetype(font, ft, {37.5, false});
-    expect_every_glyph_matches_freetype(font, ft, {13.0, true});
+    expect_every_glyph_matches_freetype(font, ft, {37.5, Hinting::None});
+    expect_every_glyph_matches_freetype(font, ft, {13.0, Hinting::Full});
 }
 
 TEST(FontOutline, EveryEdgeCaseGlyphMatchesFreeTypeDecompose) {
@@ -249,8 +252,8 @@ TEST(FontOutline, EveryEdgeCaseGlyphMatchesFreeTypeDecompose) {
         Font font = open_or_die(file);
         FtFace ft(file);
         for (double size : {1.0, 17.0, 1000.0, kMaxFontSizePx}) {
-            expect_every_glyph_matches_freetype(font, ft, {size, false});
-            expect_every_glyph_matches_freetype(font, ft, {size, true});
+            expect_every_glyph_matches_freetype(font, ft, {size, Hinting::None});
+            expect_every_glyph_matches_freetype(font, ft, {size, Hinting::Full});
         }
     }
 }
@@ -261,7 +264,7 @@ TEST(FontOutline, VariedGlyphsMatchFreeTypeDecompose) {
     for (double wght : {100.0, 250.0, 900.0}) {
         ASSERT_TRUE(font.set_variations({{"wght", wght}}));
         ft.set_design_coordinates({wght});
-        expect_every_glyph_matches_freetype(font, ft, {64.0, false});
+        expect_every_glyph_matches_freetype(font, ft, {64.0, Hinting::None});
     }
 }
 
@@ -281,7 +284,7 @@ TEST(FontOutline, ExactScalingAgreesWithFreeTypeScalingWithinItsRounding) {
         const double ft_size_px = std::lround(size_px * 64.0) / 64.0;  // what FreeType was given
         double worst_simple_px = 0.0, worst_composite_px = 0.0;
         for (GlyphId gid = 0; gid < font.glyph_count(); ++gid) {
-            Expected<GlyphOutline> outline = font.outline(gid, {ft_size_px, false});
+            Expected<GlyphOutline> outline = font.outline(gid, {ft_size_px, Hinting::None});
             ASSERT_TRUE(outline);
             ASSERT_EQ(FT_Load_Glyph(ft.get(), gid, FT_LOAD_NO_RECURSE | FT_LOAD_NO_HINTING), 0);
             const bool composite = ft.get()->glyph->format == FT_GLYPH_FORMAT_COMPOSITE;
@@ -418,7 +421,7 @@ protected:
     Font font = open_or_die(kEdge);
     // At 1000 px a pixel is a font unit: expected points are the font's, y negated.
     GlyphOutline outline_of(char32_t c) {
-        Expected<GlyphOutline> o = font.outline(gid_for(font, c), {kEdgeUpem, false});
+        Expected<GlyphOutline> o = font.outline(gid_for(font, c), {kEdgeUpem, Hinting::None});
         EXPECT_TRUE(o) << (o ? "" : o.error().message);
         return o ? std::move(o).value() : GlyphOutline{};
     }
@@ -524,7 +527,7 @@ TEST_F(EdgeCases, EmptyGlyphHasEmptyPathAndItsAdvance) {
     EXPECT_TRUE(space.metrics.bounds_px.is_empty());
     EXPECT_EQ(space.metrics.advance_px, 300);
     EXPECT_EQ(space.metrics.left_bearing_px, 0);
-    Expected<GlyphOutline> hinted = font.outline(space.gid, {12, true});
+    Expected<GlyphOutline> hinted = font.outline(space.gid, {12, Hinting::Full});
     ASSERT_TRUE(hinted);
     EXPECT_TRUE(hinted->path.empty());
 }
@@ -545,7 +548,7 @@ TEST_F(EdgeCases, OverlappingContoursAreKeptAndFlagged) {
 
 TEST_F(EdgeCases, ScalingIsExactAtAnySize) {
     // 'A' at 3 px: every coordinate is its font-unit value × 3/1000 in double.
-    Expected<GlyphOutline> o = font.outline(gid_for(font, 'A'), {3.0, false});
+    Expected<GlyphOutline> o = font.outline(gid_for(font, 'A'), {3.0, Hinting::None});
     ASSERT_TRUE(o);
     EXPECT_EQ(o->points[1].pos, Point(100 * (3.0 / 1000), 0.0 - 501 * (3.0 / 1000)));
     EXPECT_EQ(o->metrics.advance_px, 600 * (3.0 / 1000));
@@ -584,16 +587,16 @@ TEST(FontMetricsTest, DejaVuSansFaceAndGlyphMetrics) {
     EXPECT_EQ(g, 74u);
     EXPECT_EQ(font.glyph_name(g), "g");
     // At 2048 px a pixel is a font unit: hmtx advance 1300, glyf bbox (113, −426)–(1114, 1147).
-    Expected<GlyphMetrics> gm = font.glyph_metrics(g, {2048, false});
+    Expected<GlyphMetrics> gm = font.glyph_metrics(g, {2048, Hinting::None});
     ASSERT_TRUE(gm);
     EXPECT_EQ(gm->advance_px, 1300);
     EXPECT_EQ(gm->left_bearing_px, 113);
     EXPECT_EQ(gm->bounds_px, Rect(113, -1147, 1114, 426));
-    gm = font.glyph_metrics(g, {16, false});
+    gm = font.glyph_metrics(g, {16, Hinting::None});
     ASSERT_TRUE(gm);
     EXPECT_EQ(gm->advance_px, 1300 * (16.0 / 2048));
 
-    Expected<GlyphMetrics> space = font.glyph_metrics(gid_for(font, U' '), {2048, false});
+    Expected<GlyphMetrics> space = font.glyph_metrics(gid_for(font, U' '), {2048, Hinting::None});
     ASSERT_TRUE(space);
     EXPECT_EQ(space->advance_px, 651);
     EXPECT_TRUE(space->bounds_px.is_empty());
@@ -608,7 +611,7 @@ TEST(FontMetricsTest, CantarellIsCubicWithKnownMetrics) {
     EXPECT_EQ(m.ascender, 983);
     EXPECT_EQ(m.descender, -217);
     const GlyphId g = gid_for(font, U'g');
-    Expected<GlyphOutline> o = font.outline(g, {1000, false});
+    Expected<GlyphOutline> o = font.outline(g, {1000, Hinting::None});
     ASSERT_TRUE(o);
     EXPECT_EQ(o->metrics.advance_px, 570);
     EXPECT_EQ(o->metrics.bounds_px, Rect(52, -492, 487, 227));  // CFF control box, y negated
@@ -623,7 +626,7 @@ TEST(FontMetricsTest, CantarellIsCubicWithKnownMetrics) {
 TEST(FontMetricsTest, GlyphMetricsEqualOutlineMetrics) {
     Font font = open_or_die(kDejaVu);
     for (GlyphId gid = 0; gid < font.glyph_count(); gid += 7) {
-        for (bool hinting : {false, true}) {
+        for (Hinting hinting : {Hinting::None, Hinting::Light, Hinting::Full, Hinting::Auto}) {
             const OutlineOptions options{11.0, hinting};
             Expected<GlyphMetrics> m = font.glyph_metrics(gid, options);
             Expected<GlyphOutline> o = font.outline(gid, options);
@@ -638,7 +641,7 @@ TEST(FontMetricsTest, GlyphMetricsEqualOutlineMetrics) {
 TEST(FontMetricsTest, CompositeGlyphHasItsComponentsPoints) {
     // DejaVu's 'Agrave' is a composite of 'A' and 'grave'.
     Font font = open_or_die(kDejaVu);
-    const OutlineOptions options{100, false};
+    const OutlineOptions options{100, Hinting::None};
     Expected<GlyphOutline> agrave = font.outline(gid_for(font, U'À'), options);
     Expected<GlyphOutline> a = font.outline(gid_for(font, U'A'), options);
     ASSERT_TRUE(agrave && a);
@@ -653,8 +656,8 @@ TEST(FontMetricsTest, CompositeGlyphHasItsComponentsPoints) {
 TEST(FontHinting, HintingMovesPointsAtSmallSizesAndRoundsAdvances) {
     Font font = open_or_die(kDejaVu);
     const GlyphId a = gid_for(font, U'a');
-    Expected<GlyphOutline> plain = font.outline(a, {11, false});
-    Expected<GlyphOutline> hinted = font.outline(a, {11, true});
+    Expected<GlyphOutline> plain = font.outline(a, {11, Hinting::None});
+    Expected<GlyphOutline> hinted = font.outline(a, {11, Hinting::Full});
     ASSERT_TRUE(plain && hinted);
     ASSERT_EQ(plain->points.size(), hinted->points.size());
     double moved_px = 0;
@@ -670,13 +673,39 @@ TEST(FontHinting, HintingMovesPointsAtSmallSizesAndRoundsAdvances) {
     EXPECT_EQ(plain->metrics.advance_px, 1255 * (11.0 / 2048));
 }
 
+TEST(FontHinting, LightHintingMovesPointsOnlyVerticallyAndAutoIsNotTheFontsOwn) {
+    Font font = open_or_die(kDejaVu);
+    for (char32_t c : {U'a', U'H', U'g', U'e'}) {
+        const GlyphId gid = gid_for(font, c);
+        Expected<GlyphOutline> plain = font.outline(gid, {11, Hinting::None});
+        Expected<GlyphOutline> light = font.outline(gid, {11, Hinting::Light});
+        Expected<GlyphOutline> full = font.outline(gid, {11, Hinting::Full});
+        Expected<GlyphOutline> autohint = font.outline(gid, {11, Hinting::Auto});
+        ASSERT_TRUE(plain && light && full && autohint);
+        ASSERT_EQ(plain->points.size(), light->points.size());
+        double moved_x = 0, moved_y = 0;
+        for (std::size_t i = 0; i < plain->points.size(); ++i) {
+            moved_x = std::max(moved_x, std::fabs(plain->points[i].pos.x - light->points[i].pos.x));
+            moved_y = std::max(moved_y, std::fabs(plain->points[i].pos.y - light->points[i].pos.y));
+        }
+        // x only as FreeType's 26.6 scaling rounds it (half of 1/64 px); y snapped to the grid.
+        EXPECT_LE(moved_x, 0.5 / 64 + 1e-9) << char(c);
+        EXPECT_GT(moved_y, 0.05) << char(c);
+        // DejaVu has its own TrueType instructions: the auto-hinter places points elsewhere.
+        bool differs = false;
+        for (std::size_t i = 0; i < full->points.size(); ++i)
+            differs = differs || full->points[i].pos != autohint->points[i].pos;
+        EXPECT_TRUE(differs) << char(c);
+    }
+}
+
 TEST(FontHinting, HintedSizeChangesTakeEffect) {
     // The hinted char size is cached per Font; switching sizes must not reuse a stale one.
     Font font = open_or_die(kDejaVu);
     const GlyphId a = gid_for(font, U'a');
-    Expected<GlyphOutline> at11 = font.outline(a, {11, true});
-    Expected<GlyphOutline> at22 = font.outline(a, {22, true});
-    Expected<GlyphOutline> at11_again = font.outline(a, {11, true});
+    Expected<GlyphOutline> at11 = font.outline(a, {11, Hinting::Full});
+    Expected<GlyphOutline> at22 = font.outline(a, {22, Hinting::Full});
+    Expected<GlyphOutline> at11_again = font.outline(a, {11, Hinting::Full});
     ASSERT_TRUE(at11 && at22 && at11_again);
     EXPECT_EQ(at11->path.points(), at11_again->path.points());
     EXPECT_NE(at11->metrics.advance_px, at22->metrics.advance_px);
@@ -706,7 +735,7 @@ TEST(FontVariations, OutlineAndAdvanceFollowWeight) {
         } else {
             EXPECT_TRUE(font.set_variations({}));  // back to the defaults
         }
-        Expected<GlyphOutline> o = font.outline(bar, {kEdgeUpem, false});
+        Expected<GlyphOutline> o = font.outline(bar, {kEdgeUpem, Hinting::None});
         EXPECT_TRUE(o);
         return std::pair<double, double>{o->metrics.bounds_px.x1, o->metrics.advance_px};
     };
@@ -729,7 +758,7 @@ TEST(FontVariations, UnknownAxesAndOutOfRangeValuesAreErrors) {
     EXPECT_FALSE(font.set_variations({{"wght", std::nan("")}}));
     EXPECT_FALSE(font.set_variations({{"wght", -HUGE_VAL}}));
     EXPECT_TRUE(font.set_variations({{"wght", 100}, {"wght", 900}}));  // the last one wins
-    Expected<GlyphMetrics> m = font.glyph_metrics(gid_for(font, U'I'), {kEdgeUpem, false});
+    Expected<GlyphMetrics> m = font.glyph_metrics(gid_for(font, U'I'), {kEdgeUpem, Hinting::None});
     ASSERT_TRUE(m);
     EXPECT_EQ(m->advance_px, 600);
 
@@ -755,7 +784,7 @@ TEST(FontCollection, FacesOfACollectionOpenByIndex) {
     EXPECT_TRUE(first.axes().empty());
     EXPECT_EQ(second.axes().size(), 1u);
     FtFace ft(kEdgeCollection, 1);
-    expect_every_glyph_matches_freetype(second, ft, {50, false});
+    expect_every_glyph_matches_freetype(second, ft, {50, Hinting::None});
 }
 
 // ---- Errors -----------------------------------------------------------------------------------
@@ -817,7 +846,7 @@ TEST(FontErrors, TruncatedFontsNeverCrash) {
         if (!f) continue;
         ++opened;
         for (GlyphId gid = 0; gid < f->glyph_count(); ++gid) {
-            for (bool hinting : {false, true}) {
+            for (Hinting hinting : {Hinting::None, Hinting::Light, Hinting::Full, Hinting::Auto}) {
                 Expected<GlyphOutline> o = f->outline(gid, {20, hinting});
                 if (!o) {
                     EXPECT_EQ(o.error().message.rfind(truncated + ": glyph ", 0), 0u);
@@ -851,31 +880,31 @@ TEST(FontErrors, BadSizesAreNamed) {
     const double bad_sizes[] = {0.0, -0.0, -1.0, std::nan(""), HUGE_VAL, -HUGE_VAL,
                                 kMaxFontSizePx * 1.0001, std::numeric_limits<double>::denorm_min() * -1};
     for (double size : bad_sizes) {
-        for (bool hinting : {false, true}) {
+        for (Hinting hinting : {Hinting::None, Hinting::Light, Hinting::Full, Hinting::Auto}) {
             Expected<GlyphOutline> o = font.outline(a, {size, hinting});
             ASSERT_FALSE(o) << size;
             EXPECT_NE(o.error().message.find("font size"), std::string::npos);
             EXPECT_FALSE(font.glyph_metrics(a, {size, hinting}));
         }
     }
-    Expected<GlyphOutline> o = font.outline(a, {-2.5, false});
+    Expected<GlyphOutline> o = font.outline(a, {-2.5, Hinting::None});
     ASSERT_FALSE(o);
     EXPECT_EQ(o.error().message, kEdge + ": font size -2.5 px out of range (0, 16384]");
     // The bounds themselves: the largest size is accepted, and so is the smallest positive one.
-    EXPECT_TRUE(font.outline(a, {kMaxFontSizePx, false}));
-    EXPECT_TRUE(font.outline(a, {kMaxFontSizePx, true}));
-    EXPECT_TRUE(font.outline(a, {std::numeric_limits<double>::denorm_min(), false}));
-    EXPECT_TRUE(font.outline(a, {std::numeric_limits<double>::denorm_min(), true}));
+    EXPECT_TRUE(font.outline(a, {kMaxFontSizePx, Hinting::None}));
+    EXPECT_TRUE(font.outline(a, {kMaxFontSizePx, Hinting::Full}));
+    EXPECT_TRUE(font.outline(a, {std::numeric_limits<double>::denorm_min(), Hinting::None}));
+    EXPECT_TRUE(font.outline(a, {std::numeric_limits<double>::denorm_min(), Hinting::Full}));
 }
 
 TEST(FontErrors, GlyphIdOutOfRangeIsNamed) {
     Font font = open_or_die(kEdge);
     for (GlyphId gid : {GlyphId{7}, GlyphId{65535}, GlyphId{0xFFFFFFFF}}) {
-        Expected<GlyphOutline> o = font.outline(gid, {12, false});
+        Expected<GlyphOutline> o = font.outline(gid, {12, Hinting::None});
         ASSERT_FALSE(o);
         EXPECT_EQ(o.error().message, kEdge + ": glyph id " + std::to_string(gid) +
                                          " out of range (the font has 7 glyphs)");
-        EXPECT_FALSE(font.glyph_metrics(gid, {12, true}));
+        EXPECT_FALSE(font.glyph_metrics(gid, {12, Hinting::Full}));
     }
 }
 
@@ -888,9 +917,9 @@ TEST(FontLifetime, FontsMoveAndWorkIndependently) {
     EXPECT_EQ(fonts[0].family_name(), "Bezel Edge Cases");
     EXPECT_EQ(fonts[1].family_name(), "Cantarell");
     // Loading at a hinted size in one Font does not disturb another of the same file.
-    Expected<GlyphOutline> a1 = moved.outline(68, {9, true});
-    Expected<GlyphOutline> a2 = fonts[2].outline(68, {30, true});
-    Expected<GlyphOutline> a3 = moved.outline(68, {9, true});
+    Expected<GlyphOutline> a1 = moved.outline(68, {9, Hinting::Full});
+    Expected<GlyphOutline> a2 = fonts[2].outline(68, {30, Hinting::Full});
+    Expected<GlyphOutline> a3 = moved.outline(68, {9, Hinting::Full});
     ASSERT_TRUE(a1 && a2 && a3);
     EXPECT_EQ(a1->path.points(), a3->path.points());
 }

@@ -81,7 +81,7 @@ TEST(GlyphCache, HintingBoxModeFlatteningAndLcdSettingsAreInTheKey) {
     o.size_px = 13;
     const GlyphId g = f.gid(U'g');
     std::vector<GlyphRenderOptions> variants(7, o);
-    variants[1].hinting = true;
+    variants[1].hinting = Hinting::Full;
     variants[2].box = GlyphBoxMode::FreeType;
     variants[3].fill.flatten.method = FlattenMethod::ParabolaIntegral;
     variants[4].fill.format = CoverageFormat::Lcd;

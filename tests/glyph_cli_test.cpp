@@ -380,7 +380,7 @@ TEST(RenderWithFreeType, EqualsFtRenderGlyphForAnyStride) {
             const bezel::Vec2 pen{0.25 - b.left, double(b.top)};
             const int stride = b.width + 5;
             std::vector<std::uint8_t> down(std::size_t(stride) * b.rows, 77);
-            ASSERT_TRUE(render_with_freetype(*font, gid, {size, false},
+            ASSERT_TRUE(render_with_freetype(*font, gid, {size},
                                                    bezel::MaskView{down.data(), b.width, b.rows, stride},
                                                    pen)
                             .ok());
@@ -388,7 +388,7 @@ TEST(RenderWithFreeType, EqualsFtRenderGlyphForAnyStride) {
             std::vector<std::uint8_t> up(std::size_t(b.width) * b.rows, 77);
             const bezel::MaskView up_view{up.data() + std::size_t(b.rows - 1) * b.width, b.width,
                                           b.rows, -b.width};
-            ASSERT_TRUE(render_with_freetype(*font, gid, {size, false}, up_view, pen).ok());
+            ASSERT_TRUE(render_with_freetype(*font, gid, {size}, up_view, pen).ok());
             for (int y = 0; y < b.rows; ++y) {
                 for (int x = 0; x < b.width; ++x) {
                     const int want = b.px[std::size_t(y) * b.pitch + x];
@@ -408,20 +408,20 @@ TEST(RenderWithFreeType, FollowsVariationsAndRejectsBadInput) {
     ASSERT_TRUE(font.ok());
     const bezel::GlyphId gid = *font->glyph_for_char('I');
     bezel::Mask regular(40, 40), black(40, 40);
-    ASSERT_TRUE(render_with_freetype(*font, gid, {40, false}, regular.view(), {0, 35}).ok());
+    ASSERT_TRUE(render_with_freetype(*font, gid, {40}, regular.view(), {0, 35}).ok());
     ASSERT_TRUE(font->set_variations({{"wght", 900}}).ok());
-    ASSERT_TRUE(render_with_freetype(*font, gid, {40, false}, black.view(), {0, 35}).ok());
+    ASSERT_TRUE(render_with_freetype(*font, gid, {40}, black.view(), {0, 35}).ok());
     // The bar spans x 4..12 px at wght 400 and 4..20 at 900.
     EXPECT_EQ(regular.at(15, 20), 0);
     EXPECT_EQ(black.at(15, 20), 255);
     bezel::Mask m(8, 8);
-    EXPECT_FALSE(render_with_freetype(*font, 99, {12, false}, m.view(), {0, 0}).ok());
-    EXPECT_FALSE(render_with_freetype(*font, gid, {0, false}, m.view(), {0, 0}).ok());
-    EXPECT_FALSE(render_with_freetype(*font, gid, {12, false}, m.view(), {NAN, 0}).ok());
-    EXPECT_FALSE(render_with_freetype(*font, gid, {12, false}, bezel::MaskView{nullptr, 8, 8, 8},
+    EXPECT_FALSE(render_with_freetype(*font, 99, {12}, m.view(), {0, 0}).ok());
+    EXPECT_FALSE(render_with_freetype(*font, gid, {0}, m.view(), {0, 0}).ok());
+    EXPECT_FALSE(render_with_freetype(*font, gid, {12}, m.view(), {NAN, 0}).ok());
+    EXPECT_FALSE(render_with_freetype(*font, gid, {12}, bezel::MaskView{nullptr, 8, 8, 8},
                                             {0, 0})
                      .ok());
-    EXPECT_FALSE(render_with_freetype(*font, gid, {12, false}, bezel::MaskView{m.view().data, 8, 8, 4},
+    EXPECT_FALSE(render_with_freetype(*font, gid, {12}, bezel::MaskView{m.view().data, 8, 8, 4},
                                             {0, 0})
                      .ok());
 }

@@ -156,7 +156,7 @@ TEST(GlyphRasterizer, PixelsAgreeWithFreeTypeAtTheSameBox) {
             ASSERT_TRUE(box);
             Mask ours(box->width, box->height), theirs(box->width, box->height);
             ASSERT_TRUE(rasterizer.render(gid, o, ours.view()));
-            ASSERT_TRUE(render_with_freetype(*font, gid, {24, false}, theirs.view(),
+            ASSERT_TRUE(render_with_freetype(*font, gid, {24}, theirs.view(),
                                                    {sx - box->left, static_cast<double>(box->top)}));
             Diff d = diff(ours.view(), theirs.view());
             EXPECT_LE(d.max, 20) << char(ch) << " at +" << sx;

@@ -107,8 +107,8 @@ TEST(Limits, FontSizeAbovekMaxFontSizePxIsAnError) {
     auto font = Font::open(kDejaVu);
     ASSERT_TRUE(font);
     const GlyphId g = font->glyph_for_char(U'g').value();
-    expect_error(font->outline(g, {kMaxFontSizePx * 2, false}), "size");
-    EXPECT_TRUE(font->outline(g, {kMaxFontSizePx, false}));
+    expect_error(font->outline(g, {kMaxFontSizePx * 2, Hinting::None}), "size");
+    EXPECT_TRUE(font->outline(g, {kMaxFontSizePx, Hinting::None}));
 }
 
 TEST(Limits, GlyphOffsetBeyondkMaxGlyphOffsetPxIsAnError) {

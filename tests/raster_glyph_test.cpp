@@ -33,7 +33,7 @@ Rendered load(Font& font, char32_t ch, double size_px) {
     Rendered r;
     auto gid = font.glyph_for_char(ch);
     if (!gid) return r;
-    Expected<GlyphOutline> o = font.outline(*gid, OutlineOptions{size_px, false});
+    Expected<GlyphOutline> o = font.outline(*gid, OutlineOptions{size_px, Hinting::None});
     if (!o.ok() || o->metrics.bounds_px.is_empty()) return r;
     const Rect& b = o->metrics.bounds_px;
     r.path = o->path;

@@ -126,7 +126,7 @@ TEST(OverlapAccurate, OverlappingGlyphOIsExactAtEverySize) {
     const GlyphId gid = *font->glyph_for_char('O');
     Rasterizer r;
     for (double size : {12.0, 24.0, 48.0, 96.0}) {
-        Expected<GlyphOutline> o = font->outline(gid, {size, false});
+        Expected<GlyphOutline> o = font->outline(gid, {size, Hinting::None});
         ASSERT_TRUE(o);
         ASSERT_TRUE(o->overlapping_contours);
         const double k = size / 1000.0;
@@ -204,7 +204,7 @@ TEST(OverlapAccurate, EqualsPlainOnGlyphsWithoutOverlaps) {
         for (char32_t ch : std::u32string(U"aAgQ@&%8Bxé§")) {
             auto gid = font->glyph_for_char(ch);
             ASSERT_TRUE(gid);
-            Expected<GlyphOutline> o = font->outline(*gid, {size, false});
+            Expected<GlyphOutline> o = font->outline(*gid, {size, Hinting::None});
             ASSERT_TRUE(o);
             const int n = static_cast<int>(size * 1.4);
             const Affine m = Affine::translate({1.3, size + 0.6});

@@ -154,6 +154,60 @@ TEST(RenderCli, LoneWordThatIsNoFileIsTheTextInTheDefaultFont) {
     EXPECT_EQ(slurp(dir.path() / "font.png"), slurp(dir.path() / "sample.png"));
 }
 
+// Pixels an edge crosses (neither paper nor full ink): hinting moves edges onto pixel
+// boundaries, so fewer pixels are partly covered than where the exact outline straddles them.
+int edge_pixels(const Mask& page) {
+    int n = 0;
+    for (std::uint8_t v : page.pixels()) n += v > 0 && v < 255;
+    return n;
+}
+
+TEST(RenderCli, EveryHintingModeDrawsAsTheLibraryAndHintedEdgesFallOnPixelBoundaries) {
+    TempDir dir("bezel-render-cli");
+    auto renderer = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(renderer);
+    int unhinted_edges = 0;
+    for (Hinting mode : {Hinting::None, Hinting::Light, Hinting::Full, Hinting::Auto}) {
+        const std::string name = hinting_name(mode);
+        auto run = run_bezel({"render", "--hinting", name, "--text", "Hamburgefonts HELIX",
+                              "--font-size", "11", "--margin", "2", "-o", name + ".pgm"},
+                             dir.path());
+        ASSERT_EQ(run.exit_code, 0) << name << ": " << run.err;
+        TextRenderOptions o;
+        o.shape.size_px = 11;
+        o.layout.margin_px = 2;
+        o.hinting = mode;
+        auto page = renderer->render_gray("Hamburgefonts HELIX", o);
+        ASSERT_TRUE(page) << page.error().message;
+        auto pgm = encode_pgm(page->view());
+        EXPECT_TRUE(slurp(dir.path() / (name + ".pgm")) == std::string(pgm.begin(), pgm.end()))
+            << name << ": the CLI's page differs from the library's";
+        if (mode == Hinting::None) {
+            unhinted_edges = edge_pixels(*page);
+        } else {
+            EXPECT_LT(edge_pixels(*page), unhinted_edges * 9 / 10) << name;
+        }
+    }
+}
+
+TEST(RenderCli, DirectionIsTheParagraphsBaseDirection) {
+    // An RTL paragraph puts its first (Latin) run at the right: the same picture as an LTR
+    // paragraph that starts with the Hebrew run. Each run keeps its own direction.
+    TempDir dir("bezel-render-cli");
+    auto render = [&](const char* direction, const std::string& text, const std::string& file) {
+        auto run = run_bezel({"render", "--direction", direction, "--text", text, "-o", file},
+                             dir.path());
+        EXPECT_EQ(run.exit_code, 0) << run.err;
+        return slurp(dir.path() / file);
+    };
+    const std::string rtl = render("rtl", "abc \u05d0\u05d1\u05d2", "rtl.pgm");
+    const std::string ltr_hebrew_first = render("ltr", "\u05d0\u05d1\u05d2 abc", "ltr1.pgm");
+    const std::string ltr = render("ltr", "abc \u05d0\u05d1\u05d2", "ltr2.pgm");
+    ASSERT_FALSE(rtl.empty());
+    EXPECT_TRUE(rtl == ltr_hebrew_first);
+    EXPECT_FALSE(rtl == ltr);
+}
+
 TEST(RenderCli, BadInputGivesOneErrorLineAndNoFile) {
     TempDir dir("bezel-render-cli");
     {
@@ -173,6 +227,9 @@ TEST(RenderCli, BadInputGivesOneErrorLineAndNoFile) {
         {{"render", kDejaVu, "--text-file", "missing.txt", "-o", "out.png"}, 1, "missing.txt"},
         {{"render", kDejaVu, "x", "-o", "out.gif"}, 2, "out.gif"},
         {{"render", kDejaVu, "x", "--direction", "up", "-o", "out.png"}, 2, "up"},
+        // Vertical text is not offered until it exists.
+        {{"render", kDejaVu, "x", "--direction", "ttb", "-o", "out.png"}, 2, "ltr, rtl or auto"},
+        {{"render", kDejaVu, "x", "--hinting", "strong", "-o", "out.png"}, 2, "--hinting"},
         {{"render", kDejaVu, "x", "--text", "y", "-o", "out.png"}, 2, "once"},
         {{"render", kDejaVu, "x", "--margin", "30000", "--font-size", "300", "-o", "out.png"}, 1,
          "too large"},

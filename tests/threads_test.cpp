@@ -21,7 +21,7 @@ constexpr char32_t kText[] = U"Hamburgefonstiv&@g";
 constexpr int kThreads = 4;
 
 // Every glyph of kText at `size_px`, each in its own mask, concatenated; empty on any failure.
-std::vector<std::uint8_t> render_all(const std::string& file, double size_px, bool hinting) {
+std::vector<std::uint8_t> render_all(const std::string& file, double size_px, Hinting hinting) {
     auto font = Font::open(file);
     if (!font) return {};
     Rasterizer raster;
@@ -43,7 +43,7 @@ std::vector<std::uint8_t> render_all(const std::string& file, double size_px, bo
     return all;
 }
 
-void expect_threads_match(const std::string& file, double size_px, bool hinting) {
+void expect_threads_match(const std::string& file, double size_px, Hinting hinting) {
     const std::vector<std::uint8_t> reference = render_all(file, size_px, hinting);
     ASSERT_FALSE(reference.empty()) << file;
     std::vector<std::vector<std::uint8_t>> results(kThreads);
@@ -55,11 +55,11 @@ void expect_threads_match(const std::string& file, double size_px, bool hinting)
 }
 
 TEST(Threads, SeparateFontsAndRasterizersOnThreadsMatchOneThreadTrueType) {
-    expect_threads_match(kDejaVu, 24.0, false);
+    expect_threads_match(kDejaVu, 24.0, Hinting::None);
 }
 
 TEST(Threads, SeparateFontsAndRasterizersOnThreadsMatchOneThreadCffHinted) {
-    expect_threads_match(kCantarell, 17.0, true);
+    expect_threads_match(kCantarell, 17.0, Hinting::Full);
 }
 
 }  // namespace

@@ -76,7 +76,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (bezel::GlyphId gid : gids) {
         (void)font.glyph_name(gid);
         for (double size : {1.0, 12.0, 300.0}) {
-            for (bool hinting : {false, true}) {
+            for (bezel::Hinting hinting : {bezel::Hinting::None, bezel::Hinting::Light, bezel::Hinting::Full,
+                                             bezel::Hinting::Auto}) {
                 auto g = font.outline(gid, {size, hinting});
                 if (gid >= glyphs) BEZEL_FUZZ_CHECK(!g.ok());
                 if (g) check_outline(*g, raster);

@@ -49,7 +49,7 @@ bool load_font(const std::string& file, const std::string& label, Font& font) {
     font.label = label;
     font.units_per_em = opened->metrics().units_per_em;
     for (bezel::GlyphId gid = 0; gid < opened->glyph_count(); ++gid) {
-        auto outline = opened->outline(gid, {font.units_per_em, false});
+        auto outline = opened->outline(gid, {font.units_per_em, bezel::Hinting::None});
         if (!outline) continue;
         if (!outline->path.empty()) font.glyphs.push_back(std::move(outline->path));
     }

@@ -3,7 +3,7 @@
 // glyph is and how to place it:
 //
 // {
-//   "font": file, "size_px": number, "width": px, "height": px, "padding": px,
+//   "font": file, "size_px": number, "hinting": "none"|"light"|"full"|"auto", "width": px, "height": px, "padding": px,
 //   "glyphs": [{"char": string, "code_point": "U+XXXX", "gid": int,
 //               "x", "y", "width", "height": the texture rectangle (px, y down),
 //               "left", "top": bitmap offset from the pen (FreeType's bitmap_left / bitmap_top),
@@ -11,7 +11,8 @@
 // }
 //
 // A glyph's pixel (i, j) goes at (pen_x + left + i, pen_y − top + j) on the page. Glyphs are
-// rendered unhinted at a whole-pixel pen, exactly as GlyphRasterizer renders them.
+// rendered at a whole-pixel pen, hinted as --hinting says, exactly as GlyphRasterizer renders
+// them.
 #include <CLI/CLI.hpp>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -48,8 +49,6 @@ struct Entry {
 };
 
 int run_atlas(AtlasArgs& args) {
-    if (args.cmd->count("--hinting") > 0)
-        return fail_usage("--hinting: atlas glyphs are rendered unhinted", kAtlasCommand);
     if (args.output_file == "-" && (args.json_file.empty() || args.json_file == "-"))
         return fail_usage("-o - and the JSON cannot both go to stdout (give --json FILE)", kAtlasCommand);
     auto code_points = decode_utf8(args.chars);
@@ -68,6 +67,7 @@ int run_atlas(AtlasArgs& args) {
     GlyphRasterizer rasterizer(*font);
     GlyphRenderOptions options;
     options.size_px = args.font.size_px;
+    options.hinting = hinting_of(args.font);
 
     std::vector<Entry> entries;
     std::vector<AtlasRect> sizes;
@@ -103,6 +103,7 @@ int run_atlas(AtlasArgs& args) {
     }
     nlohmann::ordered_json doc = {{"font", args.font.file},
                                   {"size_px", args.font.size_px},
+                                  {"hinting", hinting_name(options.hinting)},
                                   {"width", packing->width},
                                   {"height", packing->height},
                                   {"padding", kAtlasPaddingPx},
@@ -128,6 +129,7 @@ Command add_atlas_command(CLI::App& app) {
         "The texture is a gray PNG of coverage (0 empty, 255 full), shelf-packed with 1 px of\n"
         "padding, its width a power of two, its height tight. The JSON lists per character its\n"
         "gid, texture rectangle x/y/width/height, bitmap left/top (as FreeType) and advance.\n"
+        "Glyphs are drawn at whole-pixel pens, hinted as --hinting says.\n"
         "Example:\n"
         "  bezel atlas --chars 'abcdefghijklmnopqrstuvwxyz' --font-size 24 -o atlas.png "
         "--json atlas.json");

@@ -120,7 +120,7 @@ Expected<BenchRow> bench_size(Font& font, double size, int repeat) {
         Status s = rasterizer.draw(g, target(g));
         if (!s) failed = s;
     };
-    const OutlineOptions outline_options{size, false};
+    const OutlineOptions outline_options{size, Hinting::None};
     auto freetype = [&](const PreparedGlyph& g) {
         // The pen at (−left, top) from the bitmap's top-left corner, as draw() puts it.
         Status s = render_with_freetype(font, g.gid, outline_options, target(g),

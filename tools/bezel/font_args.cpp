@@ -55,9 +55,18 @@ void add_font_args(CLI::App& cmd, FontArgs& args) {
                    "Variable-font axis values, comma-separated, e.g. \"wght=700,wdth=80\"")
         ->type_name("LIST")
         ->check(parse_check(parse_variations, "variations"));
-    cmd.add_flag("--hinting", args.hinting,
-                 "Hint the outlines (TrueType bytecode or FreeType's hinter) instead of exact "
-                 "scaling");
+    cmd.add_option("--hinting", args.hinting,
+                   "none (exact outlines, the default), light (vertical only), full (the font's "
+                   "own hints) or auto (FreeType's auto-hinter)")
+        ->type_name("MODE")
+        ->check(CLI::IsMember({"none", "light", "full", "auto"}));
+}
+
+Hinting hinting_of(const FontArgs& args) {
+    if (args.hinting == "light") return Hinting::Light;
+    if (args.hinting == "full") return Hinting::Full;
+    if (args.hinting == "auto") return Hinting::Auto;
+    return Hinting::None;
 }
 
 Expected<std::vector<VariationSetting>> parse_variations(const std::string& spec) {

@@ -21,8 +21,11 @@ struct FontArgs {
     int face_index = 0;
     double size_px = kDefaultFontSizePx;
     std::string variations;      // "wght=700,wdth=80"
-    bool hinting = false;
+    std::string hinting = "none";   // --hinting: none, light, full or auto
 };
+
+// The --hinting mode of `args` (add_font_args has checked the name).
+Hinting hinting_of(const FontArgs& args);
 
 // Registers FONT, --face-index, --font-size, --variations and --hinting on `cmd`, storing into
 // `args` (which must outlive parsing). Malformed values (a size that is not a number or not in

@@ -75,7 +75,7 @@ int run_glyph(const GlyphArgs& args) {
 
     GlyphRenderOptions options;
     options.size_px = args.font.size_px;
-    options.hinting = args.font.hinting;
+    options.hinting = hinting_of(args.font);
     options.offset_px = *offset;
     options.box = GlyphBoxMode::FreeType;   // the JSON contract: FT_Render_Glyph's box
     FillOptions& fill = options.fill;

@@ -38,9 +38,9 @@ int run_outline(const OutlineArgs& args) {
     report.metrics = font->metrics();
     if (!args.font.variations.empty()) report.variations = *parse_variations(args.font.variations);
     report.size_px = args.font.size_px;
-    report.hinting = args.font.hinting;
+    report.hinting = hinting_of(args.font);
 
-    const OutlineOptions options{args.font.size_px, args.font.hinting};
+    const OutlineOptions options{args.font.size_px, report.hinting};
     double pen_x = 0;
     for (const GlyphRequest& request : *glyphs) {
         auto outline = font->outline(request.gid, options);

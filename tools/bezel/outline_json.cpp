@@ -5,7 +5,7 @@
 //   "font": {"file", "family", "style", "face_index", "outlines": "quadratic"|"cubic",
 //            "units_per_em", "ascender", "descender", "line_gap",        // font units, y up
 //            "variations": [{"tag", "value"}]},
-//   "size": px, "hinting": bool,
+//   "size": px, "hinting": "none"|"light"|"full"|"auto",
 //   "ascender_px", "descender_px": numbers (y up, as in the font),
 //   "glyphs": [{
 //     "gid": int, "name": string, "char": string (one character) or null, "code_point":
@@ -88,7 +88,7 @@ std::string format_json(const OutlineReport& r) {
           {"line_gap", r.metrics.line_gap},
           {"variations", variations}}},
         {"size", r.size_px},
-        {"hinting", r.hinting},
+        {"hinting", hinting_name(r.hinting)},
         {"ascender_px", r.ascender_px()},
         {"descender_px", r.descender_px()},
     };

@@ -118,4 +118,8 @@ std::vector<Contour> describe_contours(const GlyphOutline& outline) {
     return contours;
 }
 
+std::string hinting_label(Hinting hinting) {
+    return hinting == Hinting::None ? "unhinted" : std::string(hinting_name(hinting)) + " hinting";
+}
+
 }  // namespace bezel::cli

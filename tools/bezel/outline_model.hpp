@@ -30,6 +30,8 @@ const char* point_kind_name(PointKind kind);
 enum class SegmentKind { Line, Quad, Cubic };
 // "line", "quad", "cubic".
 const char* segment_kind_name(SegmentKind kind);
+// "unhinted", "light hinting", "full hinting", "auto hinting": the size line of text and SVG.
+std::string hinting_label(Hinting hinting);
 
 struct Segment {
     SegmentKind kind = SegmentKind::Line;
@@ -67,7 +69,7 @@ struct OutlineReport {
     FontMetrics metrics;                 // font units, y up
     std::vector<VariationSetting> variations;
     double size_px = 0;
-    bool hinting = false;
+    Hinting hinting = Hinting::None;
     std::vector<GlyphReport> glyphs;
 
     // Face metrics scaled to the size, still y up (ascender > 0).

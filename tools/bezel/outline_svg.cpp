@@ -287,7 +287,7 @@ private:
     void title_text() {
         const double x = glyph_area_.x0 + 8 * u_, y = glyph_area_.y0 - kTitleHeight * u_;
         text({x, y + 18 * u_}, title(), "#212121", 14, "start", "bold");
-        std::string sub = f(r_.size_px) + " px, " + (r_.hinting ? "hinted" : "unhinted") + ", " +
+        std::string sub = f(r_.size_px) + " px, " + hinting_label(r_.hinting) + ", " +
                           (r_.cubic ? "CFF cubic" : "TrueType quadratic") +
                           " outlines \u00b7 pixels, y down, pen at (0, 0)";
         for (const auto& v : r_.variations) sub += " \u00b7 " + v.tag + "=" + f(v.value);

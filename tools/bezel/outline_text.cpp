@@ -34,7 +34,7 @@ std::string describe_direction(Direction d, bool cubic) {
 void write_header(std::ostringstream& out, const OutlineReport& r) {
     out << "font     " << r.family << ' ' << r.style << "  (" << r.font_file << ", face "
         << r.face_index << ", " << (r.cubic ? "CFF cubic" : "TrueType quadratic") << " outlines)\n";
-    out << "size     " << three_decimals(r.size_px) << " px, " << (r.hinting ? "hinted" : "unhinted") << "; "
+    out << "size     " << three_decimals(r.size_px) << " px, " << hinting_label(r.hinting) << "; "
         << r.metrics.units_per_em << " units/em; ascender " << three_decimals(r.ascender_px())
         << " px, descender " << three_decimals(r.descender_px()) << " px (y up)\n";
     if (!r.variations.empty()) {

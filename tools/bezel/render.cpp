@@ -63,9 +63,8 @@ Expected<bezel::Direction> parse_direction(const std::string& name) {
     if (name.empty() || name == "auto") return bezel::Direction::Auto;
     if (name == "ltr") return bezel::Direction::LeftToRight;
     if (name == "rtl") return bezel::Direction::RightToLeft;
-    if (name == "ttb") return bezel::Direction::TopToBottom;
-    if (name == "btt") return bezel::Direction::BottomToTop;
-    return Error{"--direction '" + name + "': expected ltr, rtl, ttb, btt or auto"};
+    // Vertical layout (ttb, btt) does not exist yet; the option does not offer it.
+    return Error{"--direction '" + name + "': expected ltr, rtl or auto"};
 }
 
 // The --text-file contents ('-': stdin), at most kMaxTextBytes, valid UTF-8, one trailing newline
@@ -115,8 +114,12 @@ Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
     style.join = LineJoin::Round;
     Rasterizer rasterizer;
     Mask coverage;
-    for (const PlacedGlyph& g : layout->glyphs) {
-        auto outline = font.outline(g.gid, OutlineOptions{options.shape.size_px, false});
+    // Pens as TextRenderer places them for the hinting mode (text_renderer.hpp).
+    const bool whole_pixel_pen =
+        options.hinting == Hinting::Full || options.hinting == Hinting::Auto;
+    for (PlacedGlyph g : layout->glyphs) {
+        if (whole_pixel_pen) g.x_px = std::floor(g.x_px + 0.5);
+        auto outline = font.outline(g.gid, OutlineOptions{options.shape.size_px, options.hinting});
         if (!outline) return outline.error();
         if (outline->path.empty()) continue;
         auto stroked = stroke(outline->path, style);
@@ -148,8 +151,6 @@ int run_render(RenderArgs& args) {
     const bool preview = *format == PageFormat::Ansi;
     const int columns = preview ? terminal_columns() : 0;
 
-    if (args.cmd->count("--hinting") > 0)
-        return fail_usage("--hinting: render draws unhinted outlines (subpixel-positioned)", kRenderCommand);
     if (preview && args.cmd->count("--font-size") == 0) args.font.size_px = kDefaultPreviewSizePx;
     if (args.cmd->count("TEXT") + args.cmd->count("--text") + args.cmd->count("--text-file") > 1)
         return fail_usage("give the text once: TEXT, --text or --text-file", kRenderCommand);
@@ -172,6 +173,7 @@ int run_render(RenderArgs& args) {
 
     TextRenderOptions options;
     options.shape.size_px = args.font.size_px;
+    options.hinting = hinting_of(args.font);
     auto features = parse_features(args.features);
     if (!features) return fail_usage("--features: " + features.error().message, kRenderCommand);
     options.shape.features = std::move(*features);
@@ -270,7 +272,10 @@ Command add_render_command(CLI::App& app) {
     cmd->add_option("--features", args->features,
                     "OpenType features, hb-view syntax: \"kern,-liga,+smcp,aalt=2\"")
         ->type_name("LIST");
-    cmd->add_option("--direction", args->direction, "ltr, rtl, ttb, btt or auto (default: from the text)")
+    cmd->add_option("--direction", args->direction,
+                    "The paragraph's base direction: ltr, rtl or auto (default: from its first "
+                    "strong character); runs of the other direction inside it are still ordered "
+                    "by bidi, where hb-view's --direction shapes all of the text one way")
         ->type_name("DIR");
     cmd->add_option("--script", args->script, "ISO 15924 script tag, e.g. Arab (default: from the text)")
         ->type_name("TAG");

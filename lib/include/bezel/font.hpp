@@ -55,17 +55,30 @@ struct GlyphMetrics {
     Rect bounds_px;               // control box of the outline (empty() for a blank glyph)
 };
 
+// Which of FreeType's hinters fits an outline to the pixel grid.
+enum class Hinting : std::uint8_t {
+    None,    // unhinted: the design scaled exactly
+    Light,   // FreeType's light hinting (FT_LOAD_TARGET_LIGHT): vertical snapping only, so shapes
+             // and horizontal spacing keep the design's; FreeType picks the font's native light
+             // hinter (CFF, TrueType in subpixel mode) or its auto-hinter
+    Full,    // FreeType's default hinting (FT_LOAD_TARGET_NORMAL): the font's own instructions
+             // (TrueType bytecode, CFF hints), the auto-hinter for fonts without them
+    Auto,    // FreeType's auto-hinter for every font (FT_LOAD_FORCE_AUTOHINT)
+};
+
+// "none", "light", "full", "auto".
+const char* hinting_name(Hinting hinting);
+
 struct OutlineOptions {
-    double size_px = 0;       // the em size in pixels (> 0 and ≤ kMaxFontSizePx)
-    bool hinting = false;     // false: unhinted, exact scaling; true: FreeType's hinter (native
-                              // TrueType bytecode or CFF hinter, auto-hinter otherwise)
+    double size_px = 0;                // the em size in pixels (> 0 and ≤ kMaxFontSizePx)
+    Hinting hinting = Hinting::None;
 };
 // Unhinted: FreeType loads the outline in font units (FT_LOAD_NO_SCALE) and bezel scales it by
 // size_px / units_per_em in double, with no rounding to FreeType's 1/64 px grid. The font units
 // are FreeType's: glyf points are integers, shifted so that the hmtx left side bearing holds;
 // composite transforms and variation deltas are applied by FreeType and rounded to units.
-// Hinted: FreeType scales and hints at size_px rounded to 1/64 px (TrueType fonts that ask for
-// integer ppem get it), and the result, in 26.6 pixels, is converted exactly.
+// Hinted (any other mode): FreeType scales and hints at size_px rounded to 1/64 px (TrueType
+// fonts that ask for integer ppem get it), and the result, in 26.6 pixels, is converted exactly.
 
 // How a point of the font's own outline data sits on the curve.
 enum class PointKind : std::uint8_t {

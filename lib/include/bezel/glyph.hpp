@@ -39,7 +39,7 @@ enum class GlyphBoxMode : std::uint8_t {
 
 struct GlyphRenderOptions {
     double size_px = 16;
-    bool hinting = false;   // FreeType's hinter, as OutlineOptions::hinting
+    Hinting hinting = Hinting::None;   // as OutlineOptions::hinting
     // The pen position relative to the glyph's whole-pixel origin, pixels, x right, y DOWN. A
     // toolkit passes the fractional part of its pen position, in [0, 1), and adds the whole part
     // to the box's left / −top itself (GlyphCache quantizes it to kSubpixelBins bins); any finite

@@ -24,6 +24,11 @@ struct TextRenderOptions {
     LayoutOptions layout;
     CoverageFormat format = CoverageFormat::Gray;   // Lcd: subpixel text (RGB(A) pages only)
     LcdOrder lcd_order = LcdOrder::Rgb;
+    // Glyph outlines hinted by FreeType (font.hpp). Advances and positions stay HarfBuzz's
+    // unhinted ones; a glyph hinted horizontally (Full, Auto) is drawn at the whole pixel nearest
+    // its pen, since its stems were fitted to the grid at a whole-pixel origin; None and Light
+    // keep subpixel pen positions.
+    Hinting hinting = Hinting::None;
     Rgba8 foreground{0, 0, 0, 255};
     Rgba8 background{255, 255, 255, 255};
 };

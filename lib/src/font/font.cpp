@@ -154,6 +154,30 @@ std::string Font::glyph_name(GlyphId gid) const {
     return "gid" + std::to_string(gid);
 }
 
+const char* hinting_name(Hinting hinting) {
+    switch (hinting) {
+        case Hinting::None: return "none";
+        case Hinting::Light: return "light";
+        case Hinting::Full: return "full";
+        case Hinting::Auto: return "auto";
+    }
+    return "none";
+}
+
+namespace {
+
+FT_Int32 hinted_load_flags(Hinting hinting) {
+    switch (hinting) {
+        case Hinting::Light: return FT_LOAD_TARGET_LIGHT;
+        case Hinting::Auto: return FT_LOAD_FORCE_AUTOHINT;
+        case Hinting::None:   // not reached: unhinted loads use FT_LOAD_NO_SCALE
+        case Hinting::Full: break;
+    }
+    return FT_LOAD_DEFAULT;
+}
+
+}  // namespace
+
 Expected<GlyphOutline> Font::load_glyph(GlyphId gid, const OutlineOptions& options,
                                         bool want_path) {
     const FT_Face face = impl_->face.get();
@@ -172,7 +196,7 @@ Expected<GlyphOutline> Font::load_glyph(GlyphId gid, const OutlineOptions& optio
     }
 
     double scale = 0.0;  // from FreeType's outline units to pixels
-    if (options.hinting) {
+    if (options.hinting != Hinting::None) {
         // 72 dpi makes points and pixels the same, so the char size is the pixel size in 26.6.
         const FT_F26Dot6 size = std::max<FT_F26Dot6>(1, std::lround(options.size_px * 64.0));
         if (size != impl_->char_size_26_6) {
@@ -183,7 +207,8 @@ Expected<GlyphOutline> Font::load_glyph(GlyphId gid, const OutlineOptions& optio
             }
             impl_->char_size_26_6 = size;
         }
-        if (FT_Error e = FT_Load_Glyph(face, gid, FT_LOAD_DEFAULT | FT_LOAD_NO_BITMAP)) {
+        const FT_Int32 flags = hinted_load_flags(options.hinting) | FT_LOAD_NO_BITMAP;
+        if (FT_Error e = FT_Load_Glyph(face, gid, flags)) {
             return Error{glyph_label + ": " + ft_error_text(e)};
         }
         scale = 1.0 / 64.0;

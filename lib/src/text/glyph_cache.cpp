@@ -32,7 +32,7 @@ struct Key {
     std::uint64_t flatness_bits;   // ClassicFlatness's ε (the tolerance's counterpart there)
     GlyphId gid;
     std::uint8_t bin_x, bin_y, coverage, rule_overlap;   // coverage: format and LCD order
-    std::uint8_t outline_box;   // hinting, box mode and flattening method
+    std::uint8_t outline_box;   // hinting (2 bits), box mode (1) and flattening method (2)
     std::array<std::uint8_t, 5> lcd_filter;
 
     bool operator==(const Key& o) const {
@@ -207,8 +207,8 @@ Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::u
                                             static_cast<int>(f.lcd_order) << 1),
                   static_cast<std::uint8_t>(static_cast<int>(f.rule) << 4 | static_cast<int>(f.overlap)),
                   static_cast<std::uint8_t>(static_cast<int>(o.hinting) |
-                                            static_cast<int>(o.box) << 1 |
-                                            static_cast<int>(f.flatten.method) << 2),
+                                            static_cast<int>(o.box) << 2 |
+                                            static_cast<int>(f.flatten.method) << 3),
                   f.lcd_filter.taps};
 
     if (std::size_t pos = c.find_pos(key); pos != SIZE_MAX) {

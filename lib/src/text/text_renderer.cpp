@@ -2,8 +2,9 @@
 //
 // Placement. A pen x is rounded to the nearest 1/kSubpixelBins of a pixel and split into an
 // integer column and a bin (so the cache's floor-quantization sees an exact bin and the error is
-// at most 1/8 px); a pen y is rounded to a whole pixel, so every glyph of a line shares one
-// baseline row and horizontal stems stay crisp.
+// at most 1/8 px), or to the nearest whole pixel for glyphs hinted horizontally; a pen y is
+// rounded to a whole pixel, so every glyph of a line shares one baseline row and horizontal
+// stems stay crisp.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -108,11 +109,16 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     glyph.size_px = options.shape.size_px;
     glyph.fill.format = options.format;
     glyph.fill.lcd_order = options.lcd_order;
+    glyph.hinting = options.hinting;
+    const bool whole_pixel_pen =
+        options.hinting == Hinting::Full || options.hinting == Hinting::Auto;
     // The cached glyph at g's pen, with its top-left pixel; null for a pen far off the page (a
     // huge margin is refused by the size check above; this guards the int conversions) or an
     // empty glyph.
     auto look_up = [&](const PlacedGlyph& g, int& x, int& y) -> Expected<const CachedGlyph*> {
-        const double quarters = std::floor(g.x_px * kSubpixelBins + 0.5);
+        const double quarters = whole_pixel_pen
+                                    ? std::floor(g.x_px + 0.5) * kSubpixelBins
+                                    : std::floor(g.x_px * kSubpixelBins + 0.5);
         const double column = std::floor(quarters / kSubpixelBins);
         glyph.offset_px.x = (quarters - column * kSubpixelBins) / kSubpixelBins;
         const double row = std::floor(g.y_px + 0.5);
