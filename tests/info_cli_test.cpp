@@ -150,7 +150,9 @@ TEST_F(InfoCli, ErrorsAreOneLineWithTheRightExitCode) {
     const std::string missing = kFonts + "/missing.ttf";
     CliRun r = run({"info", missing});
     EXPECT_EQ(r.exit_code, 1);
-    EXPECT_EQ(r.err, "bezel: " + missing + ": no such file\n");
+    EXPECT_EQ(r.err, "bezel: " + missing +
+                         ": no such font file (to use these words as text, give them with "
+                         "--coverage)\n");
     EXPECT_TRUE(r.out.empty());
 
     r = run({"info", kFonts + "/edge-cases/EdgeCases.ttc", "--face-index", "5"});

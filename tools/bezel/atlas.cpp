@@ -49,6 +49,16 @@ struct Entry {
 };
 
 int run_atlas(AtlasArgs& args) {
+    const std::size_t given = args.cmd->count("--chars") + args.cmd->count("CHARS");
+    auto word = lone_word_as_text(args.font.file, *args.cmd, given > 0, "--chars");
+    if (!word) return fail_runtime(word.error().message);
+    if (word->has_value()) {
+        args.chars = std::move(**word);
+    } else if (given != 1) {
+        return fail_usage(given == 0 ? "no characters given: give --chars or CHARS"
+                                     : "give the characters once: --chars or CHARS",
+                          kAtlasCommand);
+    }
     if (args.output_file == "-" && (args.json_file.empty() || args.json_file == "-"))
         return fail_usage("-o - and the JSON cannot both go to stdout (give --json FILE)", kAtlasCommand);
     auto code_points = decode_utf8(args.chars);
@@ -130,12 +140,14 @@ Command add_atlas_command(CLI::App& app) {
         "padding, its width a power of two, its height tight. The JSON lists per character its\n"
         "gid, texture rectangle x/y/width/height, bitmap left/top (as FreeType) and advance.\n"
         "Glyphs are drawn at whole-pixel pens, hinted as --hinting says.\n"
-        "Example:\n"
+        "Examples:\n"
         "  bezel atlas --chars 'abcdefghijklmnopqrstuvwxyz' --font-size 24 -o atlas.png "
-        "--json atlas.json");
+        "--json atlas.json\n"
+        "  bezel atlas 0123456789 -o digits.png --json digits.json");
     add_font_args(*cmd, args->font);
+    cmd->add_option("CHARS", args->chars,
+                    "The characters, as --chars; a lone word that is no font file is CHARS");
     cmd->add_option("--chars", args->chars, "The characters (UTF-8); repeats are packed once")
-        ->required()
         ->type_name("STRING");
     cmd->add_option("-o,--output-file", args->output_file, "The texture, a gray PNG")
         ->required()

@@ -38,6 +38,20 @@ bool looks_like_font_path(const std::string& word) {
     return false;
 }
 
+Expected<std::optional<std::string>> lone_word_as_text(std::string& font_file, const CLI::App& cmd,
+                                                       bool text_given,
+                                                       const std::string& text_option) {
+    if (cmd.count("FONT") == 0 || text_given) return std::optional<std::string>{};
+    std::error_code ec;
+    if (std::filesystem::exists(font_file, ec)) return std::optional<std::string>{};
+    if (looks_like_font_path(font_file))
+        return Error{font_file + ": no such font file (to use these words as text, give them with " +
+                     text_option + ")"};
+    std::optional<std::string> text = std::move(font_file);
+    font_file = BEZEL_DEFAULT_FONT;
+    return text;
+}
+
 void add_font_args(CLI::App& cmd, FontArgs& args) {
     args.file = BEZEL_DEFAULT_FONT;
     cmd.add_option("FONT", args.file,

@@ -3,6 +3,7 @@
 // --face-index, --font-size, --variations, --hinting.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,16 @@ Expected<std::vector<VariationSetting>> parse_variations(const std::string& spec
 // (.ttf, .otf, .ttc, .otc, .woff, .woff2, .dfont, .pfb, .pfa, any case) or a '/'. Such a word given
 // where FONT or TEXT could go is a missing font, not text to draw.
 bool looks_like_font_path(const std::string& word);
+
+// The lone-word rule of the font commands (render, glyph, outline, atlas, info), read as a person
+// means it. When `cmd` got FONT (stored in `font_file`) and no text in any other way (`text_given`
+// false): a FONT that exists stays the font (nullopt); one that looks like a font path
+// (looks_like_font_path) is a missing font, an Error that names it and suggests `text_option`;
+// any other word is the text, returned, with `font_file` reset to the default font. Otherwise
+// nullopt and `font_file` untouched.
+Expected<std::optional<std::string>> lone_word_as_text(std::string& font_file, const CLI::App& cmd,
+                                                       bool text_given,
+                                                       const std::string& text_option);
 
 // Opens args.file at args.face_index and applies args.variations. Errors name the file and, for
 // variations, the axis; a missing file or a directory is reported as such before FreeType sees it.

@@ -23,6 +23,7 @@ struct GlyphArgs {
     std::string format, output_file;
     std::string fill = "nonzero", lcd, offset, flatten = "wang", overlap = "auto";
     double tolerance_px = kDefaultRasterTolerancePx;
+    CLI::App* cmd = nullptr;
 };
 
 const std::string kGlyphCommand = "bezel glyph";
@@ -65,7 +66,7 @@ FlattenMethod method_named(const std::string& name) {
     return FlattenMethod::WangUniform;
 }
 
-int run_glyph(const GlyphArgs& args) {
+int run_glyph(GlyphArgs& args) {
     auto format = pick_format(args);
     if (!format) return fail_usage(format.error().message, kGlyphCommand);
     auto offset = parse_offset(args.offset);
@@ -86,6 +87,8 @@ int run_glyph(const GlyphArgs& args) {
     fill.flatten.tolerance_px = args.tolerance_px;
     fill.flatten.method = method_named(args.flatten);
 
+    if (int settled = settle_glyph_choice(args.which, args.font, *args.cmd, kGlyphCommand))
+        return settled;
     auto font = open_font(args.font);
     if (!font) return fail_runtime(font.error().message);
     auto requests = requested_glyphs(args.which, *font);
@@ -135,6 +138,7 @@ int run_glyph(const GlyphArgs& args) {
 Command add_glyph_command(CLI::App& app) {
     auto args = std::make_shared<GlyphArgs>();
     CLI::App* cmd = app.add_subcommand("glyph", "Render glyph bitmaps with bezel's rasterizer");
+    args->cmd = cmd;
     cmd->footer(
         "Bitmaps are unhinted (unless --hinting) coverage, 0 = empty, 255 = covered, placed as\n"
         "FreeType places FT_Render_Glyph's bitmap: left = bitmap_left, top = bitmap_top (rows\n"

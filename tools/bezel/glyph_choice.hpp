@@ -1,5 +1,6 @@
 // tools/bezel/glyph_choice.hpp — which glyphs `outline` and `glyph` work on: exactly one of
-// --char C, --gid N or --text STR, checked and resolved the same way by both.
+// --char C, --gid N, --text STR or the TEXT positional (a lone positional word that is no font
+// file counts as TEXT), checked and resolved the same way by both.
 #pragma once
 
 #include <optional>
@@ -8,6 +9,7 @@
 
 #include "bezel/expected.hpp"
 #include "bezel/font.hpp"
+#include "font_args.hpp"
 
 namespace CLI {
 class App;
@@ -23,23 +25,29 @@ struct GlyphRequest {
 };
 
 struct GlyphChoice {
-    std::string chr;   // --char
-    GlyphId gid = 0;   // --gid
-    std::string text;  // --text
-    CLI::Option* gid_option = nullptr;
-    CLI::Option* text_option = nullptr;
+    enum class Kind { Char, Gid, Text };
+    std::string chr;    // --char
+    GlyphId gid = 0;    // --gid
+    std::string text;   // --text or TEXT
+    Kind kind = Kind::Char;   // set by settle_glyph_choice
 };
 
-// Registers the three options on `cmd` as a group of which exactly one is required, storing into
-// `choice` (which must outlive parsing). What is wrong with the command line alone is a usage
-// error (exit 2) that CLI11 reports naming the option: none or more than one given, a --char that
-// is not one character or U+XXXX, a --text that is not UTF-8, empty, or longer than
-// kMaxTextCodePoints. `text_help` describes --text for the command's --help.
+// Registers --char, --gid, --text and the TEXT positional on `cmd` (after add_font_args, so that
+// FONT comes first), storing into `choice` (which must outlive parsing). Malformed values are
+// usage errors (exit 2) that CLI11 reports naming the option: a --char that is not one character
+// or U+XXXX, a --text or TEXT that is not UTF-8, empty, or longer than kMaxTextCodePoints.
+// `text_help` describes --text for the command's --help.
 void add_glyph_choice(CLI::App& cmd, GlyphChoice& choice, const std::string& text_help);
 
-// Resolves a parsed choice against `font`. A --gid past the font's glyphs and a --char the font
+// After parsing: applies the lone-word rule (lone_word_as_text) and checks that exactly one way
+// of choosing glyphs was given. Returns kExitOk, or the exit code after printing the error (a
+// missing font path: 1; none or several ways, a lone word that is not valid text: 2).
+int settle_glyph_choice(GlyphChoice& choice, FontArgs& font, const CLI::App& cmd,
+                        const std::string& command);
+
+// Resolves a settled choice against `font`. A --gid past the font's glyphs and a --char the font
 // does not map are errors naming the font (well-formed values this font lacks: runtime errors);
-// characters of --text the font does not map become .notdef (gid 0) with a warning on stderr, as
+// characters of a text the font does not map become .notdef (gid 0) with a warning on stderr, as
 // hb-view draws them.
 Expected<std::vector<GlyphRequest>> requested_glyphs(const GlyphChoice& choice, const Font& font);
 

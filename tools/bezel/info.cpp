@@ -5,24 +5,55 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "font_args.hpp"
 #include "info.hpp"
 
 namespace bezel::cli {
 namespace {
 
+constexpr const char* kInfoCommand = "bezel info";
+
 struct InfoArgs {
     std::string file = BEZEL_DEFAULT_FONT;
     int face_index = 0;
+    std::string coverage;      // --coverage or TEXT
     std::string format;        // -O
     std::string output_file;   // -o
+    CLI::App* cmd = nullptr;
 };
 
-int run_info(const InfoArgs& args) {
+// --coverage: which of the text's characters the font maps.
+int run_coverage(const InfoArgs& args, OutputFormat format) {
+    auto text = decode_utf8(args.coverage);
+    if (!text) return fail_usage("--coverage: " + text.error().message, kInfoCommand);
+    if (text->size() > kMaxTextCodePoints)
+        return fail_usage("--coverage: " + std::to_string(text->size()) +
+                              " characters, more than the " + std::to_string(kMaxTextCodePoints) +
+                              " allowed",
+                          kInfoCommand);
+    FontArgs font_args;
+    font_args.file = args.file;
+    font_args.face_index = args.face_index;
+    auto font = open_font(font_args);
+    if (!font) return fail_runtime(font.error().message);
+    const CoverageReport report = coverage_of(*font, *text);
+    return write_result(args.output_file, format == OutputFormat::Json
+                                              ? format_coverage_json(report)
+                                              : format_coverage_text(report));
+}
+
+int run_info(InfoArgs& args) {
     auto format = choose_format(args.format, args.output_file, OutputFormat::Text);
-    if (!format) return fail_usage(format.error().message, "bezel info");
+    if (!format) return fail_usage(format.error().message, kInfoCommand);
     if (*format == OutputFormat::Svg)
         return fail_usage(args.output_file + ": bezel info writes text or JSON, not SVG",
-                          "bezel info");
+                          kInfoCommand);
+    const std::size_t given = args.cmd->count("--coverage") + args.cmd->count("TEXT");
+    if (given > 1) return fail_usage("give the text once: --coverage or TEXT", kInfoCommand);
+    auto word = lone_word_as_text(args.file, *args.cmd, given > 0, "--coverage");
+    if (!word) return fail_runtime(word.error().message);
+    if (word->has_value()) args.coverage = std::move(**word);
+    if (given > 0 || word->has_value()) return run_coverage(args, *format);
     auto info = font_info(args.file, args.face_index);
     if (!info) return fail_runtime(info.error().message);
     const std::string document =
@@ -36,20 +67,28 @@ Command add_info_command(CLI::App& app) {
     auto args = std::make_shared<InfoArgs>();
     CLI::App* cmd = app.add_subcommand(
         "info", "Describe a font: names, metrics, axes, glyph count, tables, scripts covered");
+    args->cmd = cmd;
     cmd->footer(
         "Metrics are font units, y up. A script counts as covered when the cmap maps a few\n"
-        "representative letters of it.\n"
+        "representative letters of it. With --coverage (or TEXT: a lone word that is no font\n"
+        "file), only which of the text's characters the font maps, each once.\n"
         "Examples:\n"
         "  bezel info\n"
+        "  bezel info 'Grüße, Ελλάδα'\n"
         "  bezel info font.ttc --face-index 1 -O json\n"
         "  bezel info font.otf -o info.json");
     cmd->add_option("FONT", args->file,
                     "Font file (TTF, OTF, TTC/OTC); default: the bundled DejaVu Sans")
         ->capture_default_str()
         ->type_name("FILE");
+    cmd->add_option("TEXT", args->coverage, "Text whose coverage to report, as --coverage");
     cmd->add_option("--face-index", args->face_index, "Face to describe in a font collection")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--coverage", args->coverage,
+                    "Report which characters of this text (UTF-8) the font maps, instead of the "
+                    "description")
+        ->type_name("TEXT");
     cmd->add_option("-O,--output-format", args->format,
                     "text or json; default: from the -o file's extension, else text")
         ->type_name("FORMAT")

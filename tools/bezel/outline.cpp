@@ -18,12 +18,15 @@ struct OutlineArgs {
     GlyphChoice which;           // --char, --gid, --text
     std::string format;          // -O
     std::string output_file;     // -o
+    CLI::App* cmd = nullptr;
 };
 
-int run_outline(const OutlineArgs& args) {
+int run_outline(OutlineArgs& args) {
     auto format = choose_format(args.format, args.output_file, OutputFormat::Text);
     if (!format) return fail_usage(format.error().message, "bezel outline");
 
+    if (int settled = settle_glyph_choice(args.which, args.font, *args.cmd, "bezel outline"))
+        return settled;
     auto font = open_font(args.font);
     if (!font) return fail_runtime(font.error().message);
     auto glyphs = requested_glyphs(args.which, *font);
@@ -72,6 +75,7 @@ Command add_outline_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "outline",
         "Show a glyph's outline: contours, on/off-curve points, directions and segments");
+    args->cmd = cmd;
     cmd->footer(
         "Coordinates are pixels at --font-size, y down, pen at (0,0) on the baseline.\n"
         "Examples:\n"

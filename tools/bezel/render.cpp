@@ -6,7 +6,6 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -154,22 +153,14 @@ int run_render(RenderArgs& args) {
     if (preview && args.cmd->count("--font-size") == 0) args.font.size_px = kDefaultPreviewSizePx;
     if (args.cmd->count("TEXT") + args.cmd->count("--text") + args.cmd->count("--text-file") > 1)
         return fail_usage("give the text once: TEXT, --text or --text-file", kRenderCommand);
-    // A lone positional word is FONT to CLI11. As a person means it: a file that exists is the
-    // font; a word that looks like a font path but is not there is a missing font; anything else
-    // is the text, drawn in the default font (`bezel render 'Hello'`).
-    bool text_from_font_word = false;
-    if (args.cmd->count("FONT") > 0 &&
-        args.cmd->count("TEXT") + args.cmd->count("--text") + args.cmd->count("--text-file") == 0) {
-        std::error_code ec;
-        if (!std::filesystem::exists(args.font.file, ec)) {
-            if (looks_like_font_path(args.font.file))
-                return fail_runtime(args.font.file + ": no such font file (to draw these words as "
-                                    "text, give them with --text)");
-            args.text = args.font.file;
-            args.font.file = BEZEL_DEFAULT_FONT;
-            text_from_font_word = true;
-        }
-    }
+    // A lone positional word is FONT to CLI11; `bezel render 'Hello'` means the text.
+    auto word = lone_word_as_text(
+        args.font.file, *args.cmd,
+        args.cmd->count("TEXT") + args.cmd->count("--text") + args.cmd->count("--text-file") > 0,
+        "--text");
+    if (!word) return fail_runtime(word.error().message);
+    const bool text_from_font_word = word->has_value();
+    if (text_from_font_word) args.text = std::move(**word);
 
     TextRenderOptions options;
     options.shape.size_px = args.font.size_px;
