@@ -92,6 +92,18 @@ TEST_F(SurfaceCli, BSplineGridAndHermiteSolidMatchGolden) {
                                     "--target", "2,1,0"});
 }
 
+// The camera in the mouth of the teapot's spout: the spout around it crosses the near plane and
+// is cut there (no spikes from points just in front of the eye), and the view keeps its field of
+// view rather than fitting a surface that surrounds the eye.
+TEST_F(SurfaceCli, CameraInTheSpoutSeesItClippedAtTheNearPlane) {
+    const std::vector<std::string> camera = {"--patch", data("teapot.json"), "--eye", "3.1,0,2.25",
+                                             "--target", "-2,0,0.8"};
+    expect_golden("teapot_spout_solid", camera);
+    std::vector<std::string> wire = camera;
+    wire.insert(wire.end(), {"--mode", "wire"});
+    expect_golden("teapot_spout_wire", wire);
+}
+
 TEST_F(SurfaceCli, MeshFormatsHaveTheRightCounts) {
     // 32 patches × 2·3² triangles with --steps 3, 16 vertices each.
     CliRun obj = run({"--patch", data("teapot.json"), "--steps", "3", "-O", "obj"});

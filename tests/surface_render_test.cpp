@@ -227,5 +227,77 @@ TEST(SurfaceWireTest, IsoLinesLandWhereTheyShould) {
     EXPECT_FALSE(render_wireframe(square, *v, style).ok());
 }
 
+// A camera standing on a floor that runs far past it on every side: the floor crosses the near
+// plane behind and below the eye. Looking level along +x from 1 unit up, the horizon is the middle
+// row; the floor fills the lower half of the picture and nothing of it reaches the upper half.
+Camera standing_camera() {
+    Camera c;
+    c.eye = {0, 0, 1};
+    c.target = {10, 0, 1};
+    c.up = {0, 0, 1};
+    c.projection = Projection::Perspective;
+    c.fov_y_deg = 60;
+    return c;
+}
+
+std::vector<Patch> floor_around_the_camera() {
+    return {bilinear({-100, -100, 0}, {-100, 100, 0}, {100, -100, 0}, {100, 100, 0})};
+}
+
+TEST(SurfaceNearPlaneTest, FloorCrossingTheNearPlaneFillsTheLowerHalfWithoutSpikes) {
+    auto mesh = tessellate(floor_around_the_camera(), {16, 0});
+    ASSERT_TRUE(mesh.ok());
+    auto v = View::look_at(standing_camera(), 120, 80);
+    ASSERT_TRUE(v.ok());
+    SolidStyle style = head_on_light(Shading::Flat);
+    auto img = render_solid(*mesh, *v, style);
+    ASSERT_TRUE(img.ok()) << img.error().message;
+    // Every triangle under the camera crosses the near plane: were it dropped, the rows near the
+    // bottom would show the background through the hole.
+    for (int y = 0; y < 80; ++y)
+        for (int x = 0; x < 120; ++x) {
+            const Rgba8 px = img->at(x, y);
+            if (y < 39) {
+                ASSERT_EQ(channel_diff(px, style.background), 0) << x << "," << y;
+            } else if (y > 41) {
+                ASSERT_GT(channel_diff(px, style.background), 100) << x << "," << y;
+            }
+        }
+}
+
+TEST(SurfaceNearPlaneTest, WireframeLinesEndAtTheNearPlane) {
+    WireStyle style;
+    auto v = View::look_at(standing_camera(), 120, 80);
+    ASSERT_TRUE(v.ok());
+    auto img = render_wireframe(floor_around_the_camera(), *v, style);
+    ASSERT_TRUE(img.ok()) << img.error().message;
+    int ink_below = 0;
+    for (int y = 0; y < 80; ++y)
+        for (int x = 0; x < 120; ++x) {
+            const bool ink = channel_diff(img->at(x, y), style.background) > 0;
+            if (y < 39) {
+                ASSERT_FALSE(ink) << "a spike above the horizon at " << x << "," << y;
+            }
+            ink_below += ink && y > 41;
+        }
+    // The iso-line x = 0 runs under the eye to the bottom of the picture.
+    EXPECT_GT(ink_below, 40);
+    EXPECT_GT(channel_diff(img->at(60, 79), style.background), 0);
+}
+
+TEST(SurfaceNearPlaneTest, FitKeepsTheFieldOfViewWhenTheCameraIsAmongThePatches) {
+    const Camera c = standing_camera();
+    auto fitted = View::fit(c, 120, 80, floor_around_the_camera(), 4);
+    auto plain = View::look_at(c, 120, 80);
+    ASSERT_TRUE(fitted.ok() && plain.ok());
+    for (Vec3 p : {Vec3{10, 0, 0}, Vec3{5, 3, 0}, Vec3{50, -20, 0}}) {
+        EXPECT_EQ(fitted->project(p).x, plain->project(p).x);
+        EXPECT_EQ(fitted->project(p).y, plain->project(p).y);
+    }
+    EXPECT_EQ(plain->near_depth(), 10.0 * kNearPlaneFraction);
+    EXPECT_FALSE(plain->in_front({0.1, 0, 0}));
+    EXPECT_TRUE(plain->in_front({0.2, 0, 0}));
+}
+
 }  // namespace
 }  // namespace bezel

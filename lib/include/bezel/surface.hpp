@@ -195,6 +195,12 @@ struct Camera {
 Camera orbit_camera(Vec3 target, double azimuth_deg, double elevation_deg, double distance,
                     Projection projection);
 
+// The perspective near plane, as a fraction of the eye–target distance. Geometry nearer to the eye
+// than this is clipped: it bounds projected coordinates to 1/kNearPlaneFraction times the picture
+// scale at the target (so an edge running past the eye stays a finite line, not a spike), while
+// clipping only what is far closer than what the camera looks at.
+inline constexpr double kNearPlaneFraction = 1.0 / 64;
+
 // World → picture. View space: x right, y up, z the distance along the view direction. Pixel
 // x = cx + k·X, y = cy − k·Y with (X, Y) = (x, y) (orthographic) or (x/z, y/z) (perspective).
 class View {
@@ -203,17 +209,23 @@ public:
     static Expected<View> look_at(const Camera& camera, int width, int height);
     // The same camera and direction, but k and the centre chosen so that the Bézier control nets
     // of `patches` (hence, by the convex hull property, which projection preserves, the
-    // surfaces) fill the picture less `margin_px` on each side. Points behind the near plane
-    // are left out of the fit.
+    // surfaces) fill the picture less `margin_px` on each side. When a control point lies behind
+    // the near plane (a perspective camera on or inside the surfaces' hull) no scale makes them
+    // fit, and the view is look_at's: the camera's own field of view.
     static Expected<View> fit(const Camera& camera, int width, int height,
                               const std::vector<Patch>& patches, double margin_px);
 
     // (pixel x, pixel y, view depth). Depth is meaningful for every point; pixel x, y only where
     // in_front().
     Vec3 project(Vec3 world) const;
-    // For perspective: depth ≥ near plane (1e-6 of the eye–target distance). Always true for
-    // orthographic.
+    // The view depth of `world` alone: its distance along the view direction from the eye.
+    double depth(Vec3 world) const;
+    // For perspective: depth ≥ near_depth(). Always true for orthographic. The renderers clip
+    // what crosses the near plane at the plane itself, so a camera on or inside a surface sees
+    // it cut there.
     bool in_front(Vec3 world) const;
+    // Perspective: kNearPlaneFraction of the eye–target distance; orthographic: −∞.
+    double near_depth() const;
     // Unit vector from `world` towards the viewer (constant for orthographic).
     Vec3 to_viewer(Vec3 world) const;
     // View-space basis in world coordinates: right, up, forward.

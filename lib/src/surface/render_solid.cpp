@@ -1,6 +1,7 @@
 // Shaded pictures of triangle meshes: exact-area coverage from the Rasterizer, Lambert shading,
 // depth sort front to back with saturating coverage (the reasons are in surface.hpp).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -14,10 +15,52 @@ namespace {
 using surface_detail::Framebuffer;
 using surface_detail::LinearRgb;
 
-struct Projected {
-    Vec2 p[3];
-    double depth[3];
+// A triangle corner: where it is in the world, its normal and its projection.
+struct Corner {
+    Vec3 world, normal, screen;
 };
+using Triangle = std::array<Corner, 3>;
+
+// The mesh's triangles as the camera sees them: those wholly in front of the near plane as they
+// are, those crossing it cut along it (Sutherland–Hodgman against one plane: the part in front
+// is a triangle or a quadrilateral, split in two), those wholly behind dropped. View depth is
+// an affine function of the world position, so the cut points, and their normals, are linear
+// interpolations along the crossing edges.
+std::vector<Triangle> clip_to_near_plane(const TriangleMesh& mesh, const View& view) {
+    std::vector<Triangle> out;
+    out.reserve(mesh.triangles.size());
+    const double near = view.near_depth();
+    auto corner = [&](Vec3 world, Vec3 normal) { return Corner{world, normal, view.project(world)}; };
+    for (const auto& t : mesh.triangles) {
+        Vec3 p[3], n[3];
+        double d[3];
+        int front = 0;
+        for (int k = 0; k < 3; ++k) {
+            p[k] = mesh.positions[t[k]];
+            n[k] = mesh.normals[t[k]];
+            d[k] = view.depth(p[k]);
+            front += d[k] >= near;
+        }
+        if (front == 3) {
+            out.push_back({corner(p[0], n[0]), corner(p[1], n[1]), corner(p[2], n[2])});
+            continue;
+        }
+        if (front == 0) continue;
+        Corner poly[4];
+        int count = 0;
+        for (int k = 0; k < 3; ++k) {
+            const int j = (k + 1) % 3;
+            if (d[k] >= near) poly[count++] = corner(p[k], n[k]);
+            if ((d[k] >= near) != (d[j] >= near)) {
+                const double s = (near - d[k]) / (d[j] - d[k]);
+                poly[count++] = corner(p[k] + (p[j] - p[k]) * s, n[k] + (n[j] - n[k]) * s);
+            }
+        }
+        out.push_back({poly[0], poly[1], poly[2]});
+        if (count == 4) out.push_back({poly[0], poly[2], poly[3]});
+    }
+    return out;
+}
 
 double lambert(const SolidStyle& style, Vec3 n, Vec3 light) {
     return style.ambient + (1.0 - style.ambient) * std::max(0.0, n.dot(light));
@@ -46,20 +89,18 @@ Expected<Image> render_solid(const TriangleMesh& mesh, const View& view, const S
                   view.forward() * style.light.z).normalized();
     if (light == Vec3{}) return Error{"render: light direction is zero or not finite"};
 
-    // Project every vertex once; order triangles nearest first by centroid depth.
-    std::vector<Vec3> screen(mesh.positions.size());
-    std::vector<char> visible(mesh.positions.size());
-    for (std::size_t k = 0; k < screen.size(); ++k) {
-        screen[k] = view.project(mesh.positions[k]);
-        visible[k] = view.in_front(mesh.positions[k]) && screen[k].is_finite();
-    }
+    // Triangles cut at the near plane, their corners projected; ordered nearest first by
+    // centroid depth.
+    const std::vector<Triangle> tris = clip_to_near_plane(mesh, view);
     std::vector<std::uint32_t> order;
-    order.reserve(mesh.triangles.size());
-    std::vector<double> key(mesh.triangles.size());
-    for (std::size_t m = 0; m < mesh.triangles.size(); ++m) {
-        const auto& t = mesh.triangles[m];
-        if (!visible[t[0]] || !visible[t[1]] || !visible[t[2]]) continue;
-        key[m] = screen[t[0]].z + screen[t[1]].z + screen[t[2]].z;
+    order.reserve(tris.size());
+    std::vector<double> key(tris.size());
+    for (std::size_t m = 0; m < tris.size(); ++m) {
+        const Triangle& t = tris[m];
+        bool finite = true;
+        for (const Corner& c : t) finite = finite && c.screen.is_finite();
+        if (!finite) continue;
+        key[m] = t[0].screen.z + t[1].screen.z + t[2].screen.z;
         order.push_back(static_cast<std::uint32_t>(m));
     }
     std::stable_sort(order.begin(), order.end(),
@@ -67,7 +108,8 @@ Expected<Image> render_solid(const TriangleMesh& mesh, const View& view, const S
 
     double zmin = HUGE_VAL, zmax = -HUGE_VAL;
     for (std::uint32_t m : order)
-        for (std::uint32_t v : mesh.triangles[m]) zmin = std::min(zmin, screen[v].z), zmax = std::max(zmax, screen[v].z);
+        for (const Corner& c : tris[m])
+            zmin = std::min(zmin, c.screen.z), zmax = std::max(zmax, c.screen.z);
     const double depth_range = zmax > zmin ? zmax - zmin : 0.0;
     const int W = view.width(), H = view.height();
     Framebuffer fb(W, H);
@@ -77,8 +119,8 @@ Expected<Image> render_solid(const TriangleMesh& mesh, const View& view, const S
     Polylines tri;
     std::vector<std::uint8_t> cover;
     for (std::uint32_t m : order) {
-        const auto& t = mesh.triangles[m];
-        const Vec3 a = screen[t[0]], b = screen[t[1]], c = screen[t[2]];
+        const Triangle& t = tris[m];
+        const Vec3 a = t[0].screen, b = t[1].screen, c = t[2].screen;
         const Vec2 pa{a.x, a.y}, pb{b.x, b.y}, pc{c.x, c.y};
         const double area2 = (pb - pa).cross(pc - pa);
         if (!(std::fabs(area2) > 1e-12)) continue;
@@ -98,12 +140,11 @@ Expected<Image> render_solid(const TriangleMesh& mesh, const View& view, const S
         if (auto ok = rasterizer.fill(tri, target, fill); !ok) return ok.error();
 
         // Two-sided lighting: the facet and its vertex normals turned towards the viewer.
-        const Vec3 wa = mesh.positions[t[0]], wb = mesh.positions[t[1]], wc = mesh.positions[t[2]];
+        const Vec3 wa = t[0].world, wb = t[1].world, wc = t[2].world;
         const Vec3 facet = (wb - wa).cross(wc - wa).normalized();
         const double side = facet.dot(view.to_viewer((wa + wb + wc) / 3.0)) < 0.0 ? -1.0 : 1.0;
         const LinearRgb flat = shade(base, lambert(style, facet * side, light));
-        const Vec3 n[3] = {mesh.normals[t[0]] * side, mesh.normals[t[1]] * side,
-                           mesh.normals[t[2]] * side};
+        const Vec3 n[3] = {t[0].normal * side, t[1].normal * side, t[2].normal * side};
         const bool perspective = view.projection() == Projection::Perspective;
         // Depth-test margin: how much depth can change across a pixel on this triangle (its
         // screen-space depth gradient; the clamped barycentrics of an edge pixel move the sample

@@ -20,39 +20,118 @@ Vec3 cubic_point(const Vec3 (&p)[4], double t) {
     return ab + (bc - ab) * t;
 }
 
-// Appends the projected polyline of the cubic with control points `c`, cut where samples fall
-// behind the near plane. Segment count from Wang's formula on the projected control points,
-// n = ⌈√(¾·max|Δ²P| / tol)⌉: exact for orthographic views, an estimate under perspective.
-void add_iso_curve(const Vec3 (&c)[4], const View& view, double tol_px, Path& path) {
-    Vec2 q[4];
-    bool all_front = true;
-    for (int k = 0; k < 4; ++k) {
-        Vec3 s = view.project(c[k]);
-        q[k] = {s.x, s.y};
-        all_front = all_front && view.in_front(c[k]);
-    }
-    int n = kMaxIsoSegments;
-    if (all_front) {
-        double dd = std::max((q[0] - q[1] * 2.0 + q[2]).length(), (q[1] - q[2] * 2.0 + q[3]).length());
-        double est = std::ceil(std::sqrt(0.75 * dd / tol_px));
-        n = std::isfinite(est) ? std::clamp(static_cast<int>(std::min(est, 1e6)), 1, kMaxIsoSegments)
-                               : kMaxIsoSegments;
-    }
-    bool pen_down = false;
-    for (int k = 0; k <= n; ++k) {
-        Vec3 w = cubic_point(c, static_cast<double>(k) / n);
-        if (!view.in_front(w)) {
-            pen_down = false;
-            continue;
-        }
-        Vec3 s = view.project(w);
-        if (pen_down) {
-            path.line_to({s.x, s.y});
+// Halvings of an iso-curve that crosses the near plane before its pieces are sampled as they are:
+// a piece at this depth spans 1/1024 of the curve's parameter.
+constexpr int kMaxNearSplitDepth = 10;
+// Chords of such a last piece.
+constexpr int kStraddlingPieceSegments = 8;
+
+// The polyline being drawn: whether a subpath is open, so that consecutive pieces join.
+struct IsoPen {
+    bool down = false;
+    void to(Vec2 p, Path& path) {
+        if (down) {
+            path.line_to(p);
         } else {
-            path.move_to({s.x, s.y});
-            pen_down = true;
+            path.move_to(p);
+            down = true;
         }
     }
+};
+
+void add_iso_piece(const Vec3 (&c)[4], const View& view, double tol_px, double margin_px,
+                   Path& path, IsoPen& pen, int split_depth);
+
+// The two halves of `c` (de Casteljau at t = ½), each added in turn.
+void split_and_add(const Vec3 (&c)[4], const View& view, double tol_px, double margin_px,
+                   Path& path, IsoPen& pen, int split_depth) {
+    const Vec3 ab = (c[0] + c[1]) * 0.5, bc = (c[1] + c[2]) * 0.5, cd = (c[2] + c[3]) * 0.5;
+    const Vec3 abc = (ab + bc) * 0.5, bcd = (bc + cd) * 0.5, mid = (abc + bcd) * 0.5;
+    const Vec3 left[4] = {c[0], ab, abc, mid}, right[4] = {mid, bcd, cd, c[3]};
+    add_iso_piece(left, view, tol_px, margin_px, path, pen, split_depth + 1);
+    add_iso_piece(right, view, tol_px, margin_px, path, pen, split_depth + 1);
+}
+
+// Appends the projected polyline of the cubic `c`, clipped at the near plane. A piece whose
+// control points are all in front is wholly in front (convex hull) and sampled with the segment
+// count of Wang's formula on its projected control points, n = ⌈√(¾·max|Δ²P| / tol)⌉ (exact for
+// orthographic views, an estimate under perspective); one whose control points are all behind
+// is dropped; one that straddles the plane is halved (de Casteljau) up to kMaxNearSplitDepth,
+// then sampled, the chords that cross the plane ending at their point on it (view depth is
+// affine in the world position).
+void add_iso_piece(const Vec3 (&c)[4], const View& view, double tol_px, double margin_px,
+                   Path& path, IsoPen& pen, int split_depth) {
+    const double near = view.near_depth();
+    int front = 0;
+    for (const Vec3& p : c) front += view.depth(p) >= near;
+    if (front == 0) {
+        pen.down = false;
+        return;
+    }
+    if (front == 4) {
+        Vec2 q[4];
+        Rect box = Rect::empty();
+        for (int k = 0; k < 4; ++k) {
+            const Vec3 s = view.project(c[k]);
+            q[k] = {s.x, s.y};
+            box = box.union_with(q[k]);
+        }
+        // In front of the eye, projection keeps a piece inside the hull of its projected
+        // control points: a hull off the picture (by more than the pen) draws nothing there.
+        const double w = view.width(), h = view.height();
+        if (box.x1 < -margin_px || box.y1 < -margin_px || box.x0 > w + margin_px ||
+            box.y0 > h + margin_px) {
+            pen.down = false;
+            return;
+        }
+        // A piece reaching far beyond the picture (near the eye) is halved so that its parts off
+        // the picture are dropped, not sampled at the tolerance.
+        if (split_depth < kMaxNearSplitDepth &&
+            std::max(box.x1 - box.x0, box.y1 - box.y0) > 4.0 * std::max(w, h)) {
+            split_and_add(c, view, tol_px, margin_px, path, pen, split_depth);
+            return;
+        }
+        const double dd = std::max((q[0] - q[1] * 2.0 + q[2]).length(),
+                                   (q[1] - q[2] * 2.0 + q[3]).length());
+        const double est = std::ceil(std::sqrt(0.75 * dd / tol_px));
+        const int n = std::isfinite(est)
+                          ? std::clamp(static_cast<int>(std::min(est, 1e6)), 1, kMaxIsoSegments)
+                          : kMaxIsoSegments;
+        for (int k = pen.down ? 1 : 0; k <= n; ++k) {
+            const Vec3 s = view.project(cubic_point(c, static_cast<double>(k) / n));
+            pen.to({s.x, s.y}, path);
+        }
+        return;
+    }
+    if (split_depth < kMaxNearSplitDepth) {
+        split_and_add(c, view, tol_px, margin_px, path, pen, split_depth);
+        return;
+    }
+    Vec3 prev;
+    double prev_depth = 0;
+    for (int k = 0; k <= kStraddlingPieceSegments; ++k) {
+        const Vec3 w = cubic_point(c, static_cast<double>(k) / kStraddlingPieceSegments);
+        const double depth = view.depth(w);
+        const bool in_front = depth >= near;
+        if (k > 0 && in_front != (prev_depth >= near)) {
+            const Vec3 s =
+                view.project(prev + (w - prev) * ((near - prev_depth) / (depth - prev_depth)));
+            pen.to({s.x, s.y}, path);
+            if (!in_front) pen.down = false;
+        }
+        if (in_front && (k > 0 || !pen.down)) {
+            const Vec3 s = view.project(w);
+            pen.to({s.x, s.y}, path);
+        }
+        prev = w;
+        prev_depth = depth;
+    }
+}
+
+void add_iso_curve(const Vec3 (&c)[4], const View& view, double tol_px, double margin_px,
+                   Path& path) {
+    IsoPen pen;
+    add_iso_piece(c, view, tol_px, margin_px, path, pen, 0);
 }
 
 }  // namespace
@@ -68,6 +147,7 @@ Expected<Image> render_wireframe(const std::vector<Patch>& patches, const View& 
         return Error{"wireframe: flatten tolerance must be positive"};
 
     Path lines;
+    const double margin_px = style.line_width_px + 1.0;   // the pen reaches this far off a line
     for (const Patch& patch : patches) {
         const Patch b = patch.to_bezier();
         for (int k = 0; k < style.iso_lines; ++k) {
@@ -79,8 +159,8 @@ Expected<Image> render_wireframe(const std::vector<Patch>& patches, const View& 
                 along_t[j] = cubic_point(col, u);
                 along_s[j] = cubic_point(b.g[j], u);
             }
-            add_iso_curve(along_t, view, style.flatten_tolerance_px, lines);
-            add_iso_curve(along_s, view, style.flatten_tolerance_px, lines);
+            add_iso_curve(along_t, view, style.flatten_tolerance_px, margin_px, lines);
+            add_iso_curve(along_s, view, style.flatten_tolerance_px, margin_px, lines);
         }
     }
     StrokeStyle pen;

@@ -52,7 +52,7 @@ Expected<View> View::look_at(const Camera& camera, int width, int height) {
     v.height_ = height;
     v.cx_ = width * 0.5;
     v.cy_ = height * 0.5;
-    v.near_ = 1e-6 * dist;
+    v.near_ = camera.projection == Projection::Perspective ? kNearPlaneFraction * dist : -HUGE_VAL;
     if (camera.projection == Projection::Perspective) {
         if (!(camera.fov_y_deg > 0.0 && camera.fov_y_deg < 180.0))
             return Error{"camera: field of view must be in (0, 180) degrees"};
@@ -72,11 +72,15 @@ Expected<View> View::fit(const Camera& camera, int width, int height,
     View v = *base;
     if (auto ok = validate_patches(patches, "camera fit"); !ok) return ok.error();
     double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
+    bool behind = false;
     for (const Patch& p : patches) {
         const Patch b = p.to_bezier();
         for (const auto& row : b.g)
             for (const Vec3& q : row) {
-                if (!v.in_front(q)) continue;
+                if (!v.in_front(q)) {
+                    behind = true;
+                    continue;
+                }
                 Vec3 w = v.to_view(q);
                 double X = w.x, Y = w.y;
                 if (v.projection_ == Projection::Perspective) X /= w.z, Y /= w.z;
@@ -85,6 +89,7 @@ Expected<View> View::fit(const Camera& camera, int width, int height,
             }
     }
     if (!(x0 <= x1)) return Error{"camera: the whole surface is behind the camera"};
+    if (behind) return base;
     const double room_x = std::max(1.0, width - 2.0 * margin_px);
     const double room_y = std::max(1.0, height - 2.0 * margin_px);
     const double span = std::max(x1 - x0, (y1 - y0) * room_x / room_y);
@@ -106,9 +111,11 @@ Vec3 View::project(Vec3 world) const {
     return {cx_ + k_ * X, cy_ - k_ * Y, w.z};
 }
 
-bool View::in_front(Vec3 world) const {
-    return projection_ == Projection::Orthographic || to_view(world).z >= near_;
-}
+double View::depth(Vec3 world) const { return (world - eye_).dot(forward_); }
+
+bool View::in_front(Vec3 world) const { return depth(world) >= near_; }
+
+double View::near_depth() const { return near_; }
 
 Vec3 View::to_viewer(Vec3 world) const {
     if (projection_ == Projection::Orthographic) return -forward_;
