@@ -230,6 +230,8 @@ TEST(RenderCli, BadInputGivesOneErrorLineAndNoFile) {
         // Vertical text is not offered until it exists.
         {{"render", kDejaVu, "x", "--direction", "ttb", "-o", "out.png"}, 2, "ltr, rtl or auto"},
         {{"render", kDejaVu, "x", "--hinting", "strong", "-o", "out.png"}, 2, "--hinting"},
+        {{"render", kDejaVu, "x", "--lcd", "rgb", "--background", "transparent", "-o", "out.png"},
+         2, "--lcd needs an opaque --background"},
         {{"render", kDejaVu, "x", "--text", "y", "-o", "out.png"}, 2, "once"},
         {{"render", kDejaVu, "x", "--margin", "30000", "--font-size", "300", "-o", "out.png"}, 1,
          "too large"},

@@ -151,6 +151,12 @@ TEST(TextRenderer, LcdModeHasColourFringesAndTheSameInk) {
         }
     EXPECT_GT(fringes, 10);
     EXPECT_NEAR(ink_lcd / ink_gray, 1.0, 0.15);
+
+    // Onto a page that is not opaque, three subpixel coverages have no alpha to go to.
+    o.background = Rgba8{255, 255, 255, 254};
+    auto translucent = r->render("olive", o);
+    ASSERT_FALSE(translucent);
+    EXPECT_NE(translucent.error().message.find("opaque background"), std::string::npos);
 }
 
 TEST(TextRenderer, SeparateRenderersOnFourThreadsAgree) {

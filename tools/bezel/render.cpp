@@ -188,6 +188,11 @@ int run_render(RenderArgs& args) {
 
     if (args.stroke_px > 0 && options.format != CoverageFormat::Gray)
         return fail_usage("--stroke draws gray coverage; it does not combine with --lcd", kRenderCommand);
+    if (options.format == CoverageFormat::Lcd && bg->a != 255)
+        return fail_usage("--lcd needs an opaque --background: a page's one alpha channel cannot "
+                          "hold three subpixel coverages (leave out --lcd for gray text on a "
+                          "transparent page)",
+                          kRenderCommand);
 
     if (preview && args.cmd->count("--margin") == 0) args.margin_px = kDefaultPreviewMarginPx;
     options.layout.margin_px = args.margin_px;

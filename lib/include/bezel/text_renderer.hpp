@@ -63,7 +63,8 @@ public:
 
     // Shapes, lays out and draws `utf8` onto a new image sized to the layout (RGBA: background
     // filled, glyphs blended in linear light as image.hpp's blend functions). Errors as
-    // layout_text, plus an image larger than kMaxImageDim.
+    // layout_text, plus an image larger than kMaxImageDim, and CoverageFormat::Lcd with a
+    // background that is not opaque (one alpha channel cannot hold three subpixel coverages).
     Expected<Image> render(std::string_view utf8, const TextRenderOptions& options);
     // The same page as one sRGB gray byte per pixel, for gray-on-gray text (what PNG and PGM
     // output of such text stores): equal to render()'s red (= green = blue) channel, pixel for

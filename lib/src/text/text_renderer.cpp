@@ -160,6 +160,10 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
 }
 
 Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOptions& options) {
+    // Subpixel coverage is three coverages a pixel; one alpha channel cannot keep them, so LCD
+    // text is blended only onto an opaque page.
+    if (options.format == CoverageFormat::Lcd && options.background.a != 255)
+        return Error{"render: LCD coverage needs an opaque background (alpha 255)"};
     Image out;
     auto drawn = draw<Image>(
         utf8, options, out, [&](int w, int h) { return Image(w, h, options.background); },
