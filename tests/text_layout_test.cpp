@@ -243,6 +243,33 @@ TEST(Layout, MixedDirectionsOrderRunsByLevel) {
     EXPECT_EQ(clusters, (std::vector<std::uint32_t>{5, 6, 7, 4, 2, 0}));
 }
 
+// The visual order of `text`'s glyphs, as the byte offsets of their clusters.
+std::vector<std::uint32_t> visual_clusters(Fixture& s, const std::string& text,
+                                           Direction direction = Direction::Auto) {
+    ShapeOptions shape = at_size(16);
+    shape.direction = direction;
+    std::vector<std::uint32_t> clusters;
+    for (const PlacedGlyph& g : lay(s, text, LayoutOptions{}, shape).glyphs)
+        clusters.push_back(g.cluster);
+    return clusters;
+}
+
+// Cases the UAX #9 subset bezel had before FriBidi got wrong.
+TEST(Layout, FullBidiKeepsNumbersWithSeparatorsIsolatesAndBracketPairsTogether) {
+    Fixture s = open_setup(kDejaVu);
+    // W4: "1,000" after Hebrew is one left-to-right number, comma included (not "000,1").
+    EXPECT_EQ(visual_clusters(s, "\u05d0 1,000"),
+              (std::vector<std::uint32_t>{3, 4, 5, 6, 7, 2, 0}));
+    // P2 skips isolates: a paragraph that starts with an RLI...PDI of Hebrew followed by Latin
+    // is left to right (isolate first, at the left).
+    EXPECT_EQ(visual_clusters(s, "\u2067\u05d0\u2069 abc"),
+              (std::vector<std::uint32_t>{0, 3, 5, 8, 9, 10, 11}));
+    // N0: in a right-to-left paragraph, "ab(cd)" keeps its closing bracket with its pair (not
+    // ")ab(cd").
+    EXPECT_EQ(visual_clusters(s, "ab(cd)", Direction::RightToLeft),
+              (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5}));
+}
+
 TEST(Layout, ExplicitDirectionOverridesTheText) {
     Fixture s = open_setup(kEdge);
     ShapeOptions shape = at_size(10);

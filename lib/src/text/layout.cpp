@@ -1,20 +1,23 @@
 // layout_text: paragraphs, script/direction runs, greedy line wrapping, alignment.
 //
-// Per paragraph (text between newlines): the paragraph's level is resolved and the text itemized
-// into runs of one script and one bidi level (script_runs.hpp); each run is shaped once, which
+// Per paragraph (text between newlines): the bidi levels are resolved (bidi.hpp: FriBidi, UAX #9)
+// and the text itemized into runs of one script and one level (script_runs.hpp); each run is
+// shaped once, which
 // gives every cluster its advance. Lines are then filled greedily in logical order: a line
 // takes text up to the last break opportunity (layout_breaks.hpp) whose text, without trailing
 // spaces, fits width_px; a word with no opportunity that is wider than the line is cut at the
 // last cluster boundary that fits (at least one cluster per line). Each line's glyphs are the
 // slices of the paragraph's shaped runs that fall on it — reshaped only where a line cuts a run
-// inside a word, where shaping across the cut (joining, kerning) no longer applies — ordered by
-// the runs' levels (L2) and placed along the baseline.
+// inside a word, where shaping across the cut (joining, kerning) no longer applies — split where
+// L1 gives the line's trailing whitespace the paragraph level, ordered by level (L2) and placed
+// along the baseline.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
 #include "bezel/layout.hpp"
+#include "text/bidi.hpp"
 #include "text/layout_breaks.hpp"
 #include "text/script_runs.hpp"
 #include "text/shape_tags.hpp"
@@ -61,7 +64,9 @@ public:
 
     // Lays out cps[begin, end) as lines appended to `out`: glyph x relative to the line's start,
     // y relative to its baseline; placement on the page comes after all lines are known.
-    Status run(std::size_t begin, std::size_t end, int level, double width_px, TextLayout& out);
+    Status run(std::size_t begin, std::size_t end, double width_px, TextLayout& out);
+    // The level of the paragraph last run: 1 right to left, 0 left to right.
+    std::uint8_t paragraph_level() const { return bidi_.paragraph_level(); }
 
 private:
     std::uint32_t offset(std::size_t i) const {
@@ -93,9 +98,11 @@ private:
     std::string_view text_;
     const std::vector<CodePoint>& cps_;
     std::size_t base_ = 0;
+    BidiParagraph bidi_;
+    std::u32string chars_;
     std::vector<ScriptRun> runs_;
     std::vector<ShapedRun> shaped_;
-    std::vector<std::uint8_t> scratch_, breaks_, boundary_;
+    std::vector<std::uint8_t> breaks_, boundary_, line_levels_;
     std::vector<double> prefix_;
     std::vector<LineSpan> lines_;
     std::vector<ShapedGlyph> pool_;
@@ -188,11 +195,14 @@ Status ParagraphLayout::wrap(std::size_t m, double width_px) {
     return ok_status();
 }
 
-Status ParagraphLayout::run(std::size_t begin, std::size_t end, int level, double width_px,
+Status ParagraphLayout::run(std::size_t begin, std::size_t end, double width_px,
                             TextLayout& out) {
     base_ = begin;
     const std::size_t m = end - begin;
-    itemize(cps_, begin, end, level, runs_, scratch_);
+    chars_.resize(m);
+    for (std::size_t k = 0; k < m; ++k) chars_[k] = cps_[begin + k].cp;
+    if (auto ok = bidi_.resolve(chars_.data(), m, shape_.direction); !ok) return ok;
+    itemize(cps_, begin, end, bidi_.levels(), runs_);
     shaped_.resize(runs_.size());
     std::vector<double>& adv = prefix_;
     adv.assign(m + 1, 0.0);
@@ -225,23 +235,32 @@ Status ParagraphLayout::place_line(const LineSpan& line, TextLayout& out) {
     pool_.clear();
     pieces_.clear();
     levels_.clear();
+    bidi_.line_levels(line.begin, line.end, line_levels_);
     for (std::size_t r = 0; r < runs_.size(); ++r) {
         const ScriptRun& run = runs_[r];
         const std::size_t rb = run.begin - base_, re = run.end - base_;
         const std::size_t a = std::max(rb, line.begin), b = std::min(re, glyph_end);
         if (a >= b) continue;
-        Piece piece{pool_.size(), 0};
+        const std::vector<ShapedGlyph>* glyphs = &shaped_[r].glyphs;
         if (cut_in_word(line, glyph_end, a, b, run)) {
             if (auto ok = shape_range(base_ + a, base_ + b, run, reshaped_); !ok) return ok;
-            pool_.insert(pool_.end(), reshaped_.glyphs.begin(), reshaped_.glyphs.end());
-        } else {
-            const std::uint32_t from = offset(base_ + a), to = offset(base_ + b);
-            for (const ShapedGlyph& g : shaped_[r].glyphs)
-                if (g.cluster >= from && g.cluster < to) pool_.push_back(g);
+            glyphs = &reshaped_.glyphs;
         }
-        piece.count = pool_.size() - piece.first;
-        pieces_.push_back(piece);
-        levels_.push_back(run.level);
+        // One piece per stretch of the slice at one line level: within a run the levels differ
+        // only where L1 reset the line's trailing whitespace.
+        for (std::size_t p = a; p < b;) {
+            const std::uint8_t level = line_levels_[p - line.begin];
+            std::size_t q = p + 1;
+            while (q < b && line_levels_[q - line.begin] == level) ++q;
+            const std::uint32_t from = offset(base_ + p), to = offset(base_ + q);
+            Piece piece{pool_.size(), 0};
+            for (const ShapedGlyph& g : *glyphs)
+                if (g.cluster >= from && g.cluster < to) pool_.push_back(g);
+            piece.count = pool_.size() - piece.first;
+            pieces_.push_back(piece);
+            levels_.push_back(level);
+            p = q;
+        }
     }
     visual_order(levels_, order_);
 
@@ -300,11 +319,8 @@ Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
     for (std::size_t p = 0;;) {
         std::size_t q = p;
         while (q < cps.size() && !is_newline(cps[q].cp)) ++q;
-        int level = shape.direction == Direction::RightToLeft ? 1 : 0;
-        if (shape.direction == Direction::Auto)
-            level = first_strong_direction(cps, p, q) < 0 ? 1 : 0;
-        if (auto ok = paragraph.run(p, q, level, layout.width_px, out); !ok) return ok.error();
-        rtl_line.resize(out.lines.size(), level == 1);
+        if (auto ok = paragraph.run(p, q, layout.width_px, out); !ok) return ok.error();
+        rtl_line.resize(out.lines.size(), paragraph.paragraph_level() == 1);
         if (q == cps.size()) break;
         p = q + 1;
         if (cps[q].cp == '\r' && p < cps.size() && cps[p].cp == '\n') ++p;
