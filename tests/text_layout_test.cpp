@@ -139,6 +139,19 @@ TEST(Layout, BreaksAfterHyphensAndBetweenIdeographs) {
     EXPECT_EQ(line_texts(lay(s, nbsp, wrap_at(100)), nbsp).size(), 1u);
 }
 
+TEST(Layout, ThaiWrapsBetweenWordsFoundByDictionary) {
+    // Thai is written without spaces; ICU's dictionary finds the words. Every character is
+    // .notdef here, 5 px but the marks (zero width): "สวัสดี" is 20 px, "สวัสดีครับ" 35 px.
+    Fixture s = open_setup(kEdge);
+    const std::string thai = "\u0e2a\u0e27\u0e31\u0e2a\u0e14\u0e35\u0e04\u0e23\u0e31\u0e1a";
+    EXPECT_EQ(line_texts(lay(s, thai, wrap_at(30)), thai),
+              (Lines{"\u0e2a\u0e27\u0e31\u0e2a\u0e14\u0e35", "\u0e04\u0e23\u0e31\u0e1a"}));
+    // Quotation marks stay with their words (LB19) and "$5.00" is one number (LB25): 31 px,
+    // then 25 px.
+    EXPECT_EQ(line_texts(lay(s, "A \"BB\" $5.00", wrap_at(32)), "A \"BB\" $5.00"),
+              (Lines{"A \"BB\" ", "$5.00"}));
+}
+
 TEST(Layout, NewlinesStartLinesAndEmptyLinesCount) {
     Fixture s = open_setup(kEdge);
     const std::string text = "A\nB\r\n\nAB\u2028B\rA";

@@ -99,6 +99,7 @@ private:
     const std::vector<CodePoint>& cps_;
     std::size_t base_ = 0;
     BidiParagraph bidi_;
+    UnicodeBreaks breaker_;
     std::u32string chars_;
     std::vector<ScriptRun> runs_;
     std::vector<ShapedRun> shaped_;
@@ -223,7 +224,7 @@ Status ParagraphLayout::run(std::size_t begin, std::size_t end, double width_px,
         }
     }
     for (std::size_t k = 0; k < m; ++k) prefix_[k + 1] += prefix_[k];   // now prefix sums
-    break_opportunities(cps_, begin, end, breaks_);
+    if (auto ok = breaker_.line_breaks(chars_.data(), m, breaks_); !ok) return ok;
     if (auto ok = wrap(m, width_px); !ok) return ok;
     for (const LineSpan& line : lines_)
         if (auto ok = place_line(line, out); !ok) return ok;

@@ -1,66 +1,87 @@
-// Line break opportunities; see layout_breaks.hpp for the rules and what is left out.
+// Line breaks and grapheme clusters by ICU's break iterators (layout_breaks.hpp).
 #include "text/layout_breaks.hpp"
 
+#include <unicode/ubrk.h>
+#include <unicode/utf16.h>
+
 namespace bezel::text_detail {
-
-namespace {
-
-bool is_hyphen(char32_t c) { return c == 0x2D || c == 0x2010 || c == 0x2012 || c == 0x2013; }
-
-bool is_glue(char32_t c) { return c == 0xA0 || c == 0x202F || c == 0x2060 || c == 0xFEFF; }
-
-bool is_closing(char32_t c) {
-    switch (c) {
-        case '.': case ',': case ':': case ';': case '!': case '?': case ')': case ']': case '}':
-        case 0x3001: case 0x3002: case 0x3009: case 0x300B: case 0x300D: case 0x300F:
-        case 0x3011: case 0x3015: case 0x3017: case 0x3019: case 0x301B: case 0x30FC:
-        case 0xFF01: case 0xFF09: case 0xFF0C: case 0xFF0E: case 0xFF1A: case 0xFF1B:
-        case 0xFF1F: case 0xFF3D: case 0xFF5D:
-            return true;
-        default:
-            return false;
-    }
-}
-
-bool is_opening(char32_t c) {
-    switch (c) {
-        case '(': case '[': case '{':
-        case 0x3008: case 0x300A: case 0x300C: case 0x300E: case 0x3010: case 0x3014:
-        case 0x3016: case 0x3018: case 0x301A: case 0xFF08: case 0xFF3B: case 0xFF5B:
-            return true;
-        default:
-            return false;
-    }
-}
-
-bool is_ideographic(char32_t c) {
-    if ((c >= 0x3000 && c <= 0x303F) || (c >= 0xFF00 && c <= 0xFFEF)) return true;
-    const hb_script_t s = script_of(c);
-    return s == HB_SCRIPT_HAN || s == HB_SCRIPT_HIRAGANA || s == HB_SCRIPT_KATAKANA ||
-           s == HB_SCRIPT_BOPOMOFO;
-}
-
-}  // namespace
 
 bool is_break_space(char32_t c) {
     return c == 0x20 || c == 0x09 || c == 0x1680 || (c >= 0x2000 && c <= 0x200A && c != 0x2007) ||
            c == 0x205F || c == 0x3000;
 }
 
-void break_opportunities(const std::vector<CodePoint>& cps, std::size_t begin, std::size_t end,
-                         std::vector<std::uint8_t>& out) {
-    const std::size_t n = end - begin;
-    out.assign(n, 0);
-    for (std::size_t k = 1; k < n; ++k) {
-        const char32_t before = cps[begin + k - 1].cp, cur = cps[begin + k].cp;
-        if (is_break_space(cur) || is_mark(cur) || is_closing(cur) || is_glue(cur) ||
-            is_glue(before) || is_opening(before))
-            continue;
-        bool ok = is_break_space(before) || before == 0x200B;
-        if (!ok && is_hyphen(before) && k >= 2 && !is_break_space(cps[begin + k - 2].cp)) ok = true;
-        if (!ok && (is_ideographic(before) || is_ideographic(cur))) ok = true;
-        out[k] = ok ? 1 : 0;
+namespace {
+
+struct IteratorCloser {
+    void operator()(UBreakIterator* it) const { ubrk_close(it); }
+};
+using Iterator = std::unique_ptr<UBreakIterator, IteratorCloser>;
+
+}  // namespace
+
+struct UnicodeBreaks::Impl {
+    Iterator line, character;
+    std::u16string utf16;
+    std::vector<std::uint32_t> index_of_unit;   // UTF-16 unit → code point index (n at the end)
+
+    // Opens `it` of `type` on first use (the root locale: UAX #14 / #29's defaults).
+    Status open(Iterator& it, UBreakIteratorType type) {
+        if (it) return ok_status();
+        UErrorCode status = U_ZERO_ERROR;
+        it.reset(ubrk_open(type, "", nullptr, 0, &status));
+        if (U_FAILURE(status) || !it) {
+            it.reset();
+            return Error{std::string("ICU break iterator: ") + u_errorName(status)};
+        }
+        return ok_status();
     }
+
+    // Sets out[k] = 1 where `it` has a boundary before text[k], 0 elsewhere, out[0] = `first`.
+    Status boundaries(UBreakIterator* it, const char32_t* text, std::size_t n, bool first,
+                      std::vector<std::uint8_t>& out) {
+        out.assign(n, 0);
+        if (n == 0) return ok_status();
+        utf16.clear();
+        index_of_unit.clear();
+        for (std::size_t k = 0; k < n; ++k) {
+            const char32_t c = text[k];
+            if (c >= 0x10000) {
+                utf16.push_back(static_cast<char16_t>(U16_LEAD(c)));
+                utf16.push_back(static_cast<char16_t>(U16_TRAIL(c)));
+                index_of_unit.insert(index_of_unit.end(), 2, static_cast<std::uint32_t>(k));
+            } else {
+                utf16.push_back(static_cast<char16_t>(c));
+                index_of_unit.push_back(static_cast<std::uint32_t>(k));
+            }
+        }
+        index_of_unit.push_back(static_cast<std::uint32_t>(n));
+        UErrorCode status = U_ZERO_ERROR;
+        ubrk_setText(it, reinterpret_cast<const UChar*>(utf16.data()),
+                     static_cast<std::int32_t>(utf16.size()), &status);
+        if (U_FAILURE(status)) return Error{std::string("ICU break iterator: ") + u_errorName(status)};
+        for (std::int32_t b = ubrk_first(it); b != UBRK_DONE; b = ubrk_next(it)) {
+            const std::uint32_t k = index_of_unit[static_cast<std::size_t>(b)];
+            if (k > 0 && k < n) out[k] = 1;
+        }
+        out[0] = first ? 1 : 0;
+        return ok_status();
+    }
+};
+
+UnicodeBreaks::UnicodeBreaks() : impl_(std::make_unique<Impl>()) {}
+UnicodeBreaks::~UnicodeBreaks() = default;
+
+Status UnicodeBreaks::line_breaks(const char32_t* text, std::size_t n,
+                                  std::vector<std::uint8_t>& out) {
+    if (auto ok = impl_->open(impl_->line, UBRK_LINE); !ok) return ok;
+    return impl_->boundaries(impl_->line.get(), text, n, false, out);
+}
+
+Status UnicodeBreaks::grapheme_starts(const char32_t* text, std::size_t n,
+                                      std::vector<std::uint8_t>& out) {
+    if (auto ok = impl_->open(impl_->character, UBRK_CHARACTER); !ok) return ok;
+    return impl_->boundaries(impl_->character.get(), text, n, true, out);
 }
 
 }  // namespace bezel::text_detail

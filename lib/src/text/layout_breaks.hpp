@@ -1,29 +1,45 @@
-// Internal: line break opportunities, a small subset of UAX #14.
+// Internal: line break opportunities (UAX #14) and grapheme cluster boundaries (UAX #29), by
+// ICU's break iterators.
 //
-// A line may break before code point i when
-//   - i follows a run of spaces (U+0020, tab, U+1680, U+2000–U+200A but not U+2007, U+205F,
-//     U+3000) or a zero width space U+200B;
-//   - i follows a hyphen (U+002D, U+2010, U+2012, U+2013) that follows a non-space;
-//   - i or the code point before it is an ideograph (Han, Hiragana, Katakana, Bopomofo, CJK
-//     symbols and fullwidth forms);
-// never before a space, a combining mark or closing punctuation (".,:;!?)]}" and their CJK and
-// fullwidth forms), never after opening punctuation ("([{" and CJK brackets), and never around
-// a no-break space (U+00A0, U+202F, U+2060, U+FEFF).
-// Left out: the rest of UAX #14's classes (quotation marks, numeric prefixes and postfixes,
-// Thai/Lao/Khmer dictionary breaking, Hangul syllable rules, emoji sequences).
+// ICU's root line rules are UAX #14's default algorithm, with its number tailoring (Example 7 of
+// UAX #14, which Unicode's LineBreakTest.txt assumes too), and dictionaries for the scripts
+// written without spaces (Thai, Lao, Khmer, Myanmar; CJK by dictionary where the rules allow).
+// ICU's data is of the Unicode version it was built with (u_getUnicodeVersion).
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
-#include "text/script_runs.hpp"
+#include "bezel/expected.hpp"
 
 namespace bezel::text_detail {
 
+// Spaces that hang at the end of a wrapped line (not placed, not counted in its width): the
+// UAX #14 class SP and the other breaking spaces of Zs (U+1680, U+2000–U+200A but not U+2007,
+// U+205F, U+3000), and tab.
 bool is_break_space(char32_t cp);
 
-// Sets out[k] = 1 when a line may break before cps[begin + k] (k in 1..n−1; out[0] = 0).
-void break_opportunities(const std::vector<CodePoint>& cps, std::size_t begin, std::size_t end,
-                         std::vector<std::uint8_t>& out);
+// One ICU break iterator of each kind, reused from text to text. Not thread-safe: one per thread
+// (each ParagraphLayout has its own).
+class UnicodeBreaks {
+public:
+    UnicodeBreaks();
+    ~UnicodeBreaks();
+    UnicodeBreaks(const UnicodeBreaks&) = delete;
+    UnicodeBreaks& operator=(const UnicodeBreaks&) = delete;
+
+    // out[k] = 1 when a line may break before text[k] (k in 1..n−1; out[0] = 0). Errors only
+    // when ICU fails (its data missing, no memory).
+    Status line_breaks(const char32_t* text, std::size_t n, std::vector<std::uint8_t>& out);
+    // out[k] = 1 when a grapheme cluster starts at text[k] (out[0] = 1 for n > 0).
+    Status grapheme_starts(const char32_t* text, std::size_t n, std::vector<std::uint8_t>& out);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace bezel::text_detail
