@@ -127,7 +127,7 @@ TEST_F(FillCli, ErrorsNameTheirInput) {
         {{"M0,0 L5,5 Q", "--width", "8", "--height", "8"}, 2, "offset"},
         {{"L5,5", "--width", "8", "--height", "8"}, 2, "offset 0"},
         {{"M0,0 h1 v1 z", "--width", "0", "--height", "8"}, 2, "--width 0"},
-        {{"M0,0 h1 v1 z", "--width", "8", "--height", "100000"}, 2, "kMaxFillDim"},
+        {{"M0,0 h1 v1 z", "--width", "8", "--height", "100000"}, 2, "--height 100000: expected 1 to 8192 pixels"},
         {{"M0,0 h1 v1 z", "--width", "8", "--height", "8", "--transform", "1,0,0,1,0"}, 2, "--transform"},
         {{"M0,0 h1 v1 z", "--width", "8", "--height", "8", "--transform", "1,0,0,1,0,x"}, 2, "'x'"},
         {{"M0,0 h1 v1 z", "--width", "8", "--height", "8", "--transform", "1,0,0,1,0,inf"}, 2, "--transform"},
@@ -137,7 +137,7 @@ TEST_F(FillCli, ErrorsNameTheirInput) {
         {{"M0,0 h1 v1 z", "--width", "8", "--height", "8", "-o", "no/dir/x.png"}, 1, "no/dir/x.png"},
         // 1e12 px of curve at 1e-9 px tolerance: past the flattener's per-curve cap.
         {{"M0,0 Q1e12,0 1e12,1e12 Z", "--width", "8", "--height", "8", "--tolerance", "1e-9"},
-         1, "kMaxSegmentsPerCurve"},
+         1, "65536 segments per curve"},
     };
     for (const Case& c : cases) {
         CliRun r = run(c.args);

@@ -59,8 +59,8 @@ Expected<Affine> parse_transform(const std::string& text) {
 
 Status check_dim(const char* option, int v) {
     if (v >= 1 && v <= kMaxFillDim) return ok_status();
-    return Error{std::string(option) + " " + std::to_string(v) + ": expected 1.." +
-                 std::to_string(kMaxFillDim) + " pixels (kMaxFillDim)"};
+    return Error{std::string(option) + " " + std::to_string(v) + ": expected 1 to " +
+                 std::to_string(kMaxFillDim) + " pixels"};
 }
 
 int run_fill(const FillArgs& args) {

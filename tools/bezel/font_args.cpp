@@ -46,7 +46,7 @@ void add_font_args(CLI::App& cmd, FontArgs& args) {
         ->type_name("FILE");
     cmd.add_option("--face-index", args.face_index, "Face to use in a font collection")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(non_negative_number());
     cmd.add_option("--font-size", args.size_px, "Em size in pixels")
         ->capture_default_str()
         ->type_name("PX")

@@ -5,6 +5,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "parse_check.hpp"
 #include "info.hpp"
 
 namespace bezel::cli {
@@ -49,7 +50,7 @@ Command add_info_command(CLI::App& app) {
         ->type_name("FILE");
     cmd->add_option("--face-index", args->face_index, "Face to describe in a font collection")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(non_negative_number());
     cmd->add_option("-O,--output-format", args->format,
                     "text or json; default: from the -o file's extension, else text")
         ->type_name("FORMAT")

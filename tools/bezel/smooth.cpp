@@ -8,6 +8,7 @@
 #include "bezel/smooth.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "parse_check.hpp"
 #include "smooth_output.hpp"
 
 namespace bezel::cli {
@@ -169,18 +170,18 @@ Command add_smooth_command(CLI::App& app) {
                   "A closed curve (a last point equal to the first is dropped)");
     cmd->add_option("--iterations", args->iterations, "chaikin: rounds of corner cutting (default 4)")
         ->type_name("N")
-        ->check(CLI::Range(0, kMaxChaikinIterations));
+        ->check(in_range(0, kMaxChaikinIterations));
     cmd->add_flag("--limit", args->limit,
                   "chaikin: the limit curve (uniform quadratic B-spline) instead of the polygon");
     cmd->add_option("--alpha", args->alpha,
                     "catmull-rom: knot exponent, 0 uniform, 0.5 centripetal (default), 1 chordal")
         ->type_name("A")
-        ->check(CLI::Range(0.0, 1.0));
+        ->check(in_range(0.0, 1.0));
     cmd->add_option("--tension", args->tension,
                     "catmull-rom, hermite without --tangents: tangent scale τ (default 0.5, the "
                     "standard Catmull-Rom; 0 gives straight pieces)")
         ->type_name("T")
-        ->check(CLI::Range(0.0, 1e6));
+        ->check(in_range(0.0, 1e6));
     cmd->add_option("--tangents", args->tangents,
                     "hermite: one derivative dx,dy per point (default: cardinal, from --tension)")
         ->type_name("LIST");
