@@ -11,6 +11,7 @@
 #include "font_args.hpp"
 #include "glyph_bitmap.hpp"
 #include "glyph_choice.hpp"
+#include "missing_glyphs.hpp"
 
 namespace bezel::cli {
 namespace {
@@ -23,6 +24,7 @@ struct GlyphArgs {
     std::string format, output_file;
     std::string fill = "nonzero", lcd, offset, flatten = "wang", overlap = "auto";
     double tolerance_px = kDefaultRasterTolerancePx;
+    bool strict = false;   // --strict
 };
 
 const std::string kGlyphCommand = "bezel glyph";
@@ -52,8 +54,8 @@ Expected<Vec2> parse_offset(const std::string& text) {
             return Error{"--offset '" + text + "': expected DX,DY (two numbers, pixels)"};
         v[i] = *number;
         if (std::fabs(v[i]) > kMaxGlyphOffsetPx)
-            return Error{"--offset '" + text + "': beyond ±" + std::to_string(int(kMaxGlyphOffsetPx)) +
-                         " px (kMaxGlyphOffsetPx)"};
+            return Error{"--offset '" + text + "': beyond ±" + plain_number(kMaxGlyphOffsetPx) +
+                         " px"};
     }
     return Vec2{v[0], v[1]};
 }
@@ -90,6 +92,8 @@ int run_glyph(const GlyphArgs& args) {
     if (!font) return fail_runtime(font.error().message);
     auto requests = requested_glyphs(args.which, *font);
     if (!requests) return fail_runtime(requests.error().message);
+    if (Status s = report_missing_glyphs(font->file(), missing_of(*requests), args.strict); !s)
+        return fail_runtime(s.error().message);
 
     // Each glyph's outline is loaded once; its box is added to the pixel budget before its
     // pixels are allocated.
@@ -104,7 +108,7 @@ int run_glyph(const GlyphArgs& args) {
         if (pixels > kMaxGlyphOutputPixels)
             return fail_runtime(font->file() + ": the glyphs need more than " +
                                 std::to_string(kMaxGlyphOutputPixels) +
-                                " pixels (kMaxGlyphOutputPixels); use a smaller --font-size");
+                                " pixels, the most one call renders; use a smaller --font-size");
         GlyphBitmap g{r.gid, font->glyph_name(r.gid), r.code_point, box, fill.format,
                       fill.lcd_order, {}};
         const int row_bytes = box.width * g.bytes_per_pixel();
@@ -174,6 +178,7 @@ Command add_glyph_command(CLI::App& app) {
                     "auto (accurate for glyphs marked as overlapping) or accurate (for all)")
         ->capture_default_str()
         ->check(CLI::IsMember({"auto", "accurate"}));
+    add_strict_option(*cmd, args->strict);
     return Command{cmd, [args] { return run_glyph(*args); }};
 }
 

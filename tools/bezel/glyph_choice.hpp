@@ -8,6 +8,7 @@
 
 #include "bezel/expected.hpp"
 #include "bezel/font.hpp"
+#include "bezel/layout.hpp"
 
 namespace CLI {
 class App;
@@ -20,6 +21,7 @@ namespace bezel::cli {
 struct GlyphRequest {
     GlyphId gid = 0;
     std::optional<char32_t> code_point;
+    bool missing = false;   // the font maps code_point to nothing: gid is .notdef (0)
 };
 
 struct GlyphChoice {
@@ -37,10 +39,13 @@ struct GlyphChoice {
 // kMaxTextCodePoints. `text_help` describes --text for the command's --help.
 void add_glyph_choice(CLI::App& cmd, GlyphChoice& choice, const std::string& text_help);
 
-// Resolves a parsed choice against `font`. A --gid past the font's glyphs and a --char the font
-// does not map are errors naming the font (well-formed values this font lacks: runtime errors);
-// characters of --text the font does not map become .notdef (gid 0) with a warning on stderr, as
-// hb-view draws them.
+// Resolves a parsed choice against `font`. A --gid past the font's glyphs is an error naming the
+// font (a well-formed value this font lacks: a runtime error); characters of --char or --text the
+// font does not map become .notdef (gid 0) marked `missing`, for report_missing_glyphs
+// (missing_glyphs.hpp), as hb-view draws them.
 Expected<std::vector<GlyphRequest>> requested_glyphs(const GlyphChoice& choice, const Font& font);
+
+// The requests marked `missing`, counted, and the first of them.
+MissingGlyphs missing_of(const std::vector<GlyphRequest>& requests);
 
 }  // namespace bezel::cli

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "font_args.hpp"
 #include "glyph_choice.hpp"
+#include "missing_glyphs.hpp"
 #include "outline_model.hpp"
 
 namespace bezel::cli {
@@ -18,6 +19,7 @@ struct OutlineArgs {
     GlyphChoice which;           // --char, --gid, --text
     std::string format;          // -O
     std::string output_file;     // -o
+    bool strict = false;         // --strict
 };
 
 int run_outline(const OutlineArgs& args) {
@@ -28,6 +30,8 @@ int run_outline(const OutlineArgs& args) {
     if (!font) return fail_runtime(font.error().message);
     auto glyphs = requested_glyphs(args.which, *font);
     if (!glyphs) return fail_runtime(glyphs.error().message);
+    if (Status s = report_missing_glyphs(font->file(), missing_of(*glyphs), args.strict); !s)
+        return fail_runtime(s.error().message);
 
     OutlineReport report;
     report.font_file = font->file();
@@ -91,6 +95,7 @@ Command add_outline_command(CLI::App& app) {
     cmd->add_option("-o,--output-file", args->output_file,
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
+    add_strict_option(*cmd, args->strict);
 
     return Command{cmd, [args] { return run_outline(*args); }};
 }
