@@ -25,6 +25,8 @@ struct GlyphArgs {
     std::string fill = "nonzero", lcd, offset, flatten = "wang", overlap = "auto";
     double tolerance_px = kDefaultRasterTolerancePx;
     bool strict = false;   // --strict
+    std::string foreground, background;   // picture colours ("": black on white)
+    bool coverage = false;                // --coverage: PNG/PGM of the coverage itself
 };
 
 const std::string kGlyphCommand = "bezel glyph";
@@ -125,7 +127,14 @@ int run_glyph(const GlyphArgs& args) {
         case GlyphFormat::Json: document = glyphs_json(glyphs, options); break;
         case GlyphFormat::Png:
         case GlyphFormat::Pnm: {
-            auto picture = *format == GlyphFormat::Png ? glyphs_png(glyphs) : glyphs_pnm(glyphs);
+            std::optional<PictureColours> colours;
+            if (!args.coverage) {
+                auto parsed = picture_colours(args.foreground, args.background);
+                if (!parsed) return fail_usage(parsed.error().message, kGlyphCommand);
+                colours = *parsed;
+            }
+            auto picture = *format == GlyphFormat::Png ? glyphs_png(glyphs, colours)
+                                                       : glyphs_pnm(glyphs, colours);
             if (!picture) return fail_runtime(font->file() + ": " + picture.error().message);
             document = std::move(*picture);
             break;
@@ -151,8 +160,9 @@ Command add_glyph_command(CLI::App& app) {
         "array with one object per glyph: gid, name, char and code_point (when known), size,\n"
         "left, top, width (pixels), height, advance, mode (gray|lcd-rgb|lcd-bgr), overlap\n"
         "(accumulate|accurate) and rows (one hex string per row, 2 digits per pixel, 6 for LCD);\n"
-        "png and pgm (PPM with --lcd): all glyphs side by side, one column apart, on a common\n"
-        "baseline.\n"
+        "png and pgm (PPM with --lcd or colours): all glyphs side by side, one column apart, on\n"
+        "a common baseline, as a picture: ink on paper, black on white unless --foreground/\n"
+        "--background; with --coverage the coverage itself (0 = empty, 255 = covered).\n"
         "Examples:\n"
         "  bezel glyph --char g --font-size 24\n"
         "  bezel glyph font.ttf --text 'Hamburg' --font-size 32 -o hamburg.png\n"
@@ -179,6 +189,12 @@ Command add_glyph_command(CLI::App& app) {
         ->capture_default_str()
         ->check(CLI::IsMember({"auto", "accurate"}));
     add_strict_option(*cmd, args->strict);
+    add_colour_options(*cmd, args->foreground, args->background);
+    cmd->add_flag("--coverage", args->coverage,
+                  "png/pgm of the coverage itself (gray, or RGB subpixels with --lcd; 255 = "
+                  "covered) instead of a picture")
+        ->excludes("--foreground")
+        ->excludes("--background");
     return Command{cmd, [args] { return run_glyph(*args); }};
 }
 

@@ -35,7 +35,8 @@ inline CLI::Validator in_range(double lo, double hi) {
                 return value + " is not in " + plain_number(lo) + " to " + plain_number(hi);
             return {};
         },
-        "", "RANGE");
+        // --help shows it after the type name: "--margin PX:[0, 32768]".
+        "[" + plain_number(lo) + ", " + plain_number(hi) + "]", "RANGE");
 }
 
 // A number above 0 (and finite).
@@ -47,7 +48,7 @@ inline CLI::Validator positive_number() {
             if (!(*v > 0 && std::isfinite(*v))) return value + " is not a positive number";
             return {};
         },
-        "", "POSITIVE");
+        "POSITIVE", "POSITIVE");
 }
 
 // A number from 0 up (a count or an index: CLI11 then checks it is a whole number).
@@ -59,7 +60,7 @@ inline CLI::Validator non_negative_number() {
             if (!(*v >= 0)) return value + " is negative (expected 0 or more)";
             return {};
         },
-        "", "NONNEGATIVE");
+        "NONNEGATIVE", "NONNEGATIVE");
 }
 
 }  // namespace bezel::cli

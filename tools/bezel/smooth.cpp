@@ -8,6 +8,7 @@
 #include "bezel/smooth.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "picture.hpp"
 #include "parse_check.hpp"
 #include "smooth_output.hpp"
 
@@ -30,6 +31,7 @@ struct SmoothArgs {
     bool free_ends = false;         // --free-ends (bspline)
     std::string format;             // -O
     std::string output_file;        // -o
+    std::string foreground, background;   // png: ink and paper ("": black on white)
     CLI::App* cmd = nullptr;
 };
 
@@ -129,7 +131,9 @@ int run_smooth(const SmoothArgs& args) {
         case SmoothFormat::Path: document = format_smooth_path(report); break;
         case SmoothFormat::Svg: document = format_smooth_svg(report); break;
         case SmoothFormat::Png: {
-            auto png = format_smooth_png(report);
+            auto colours = picture_colours(args.foreground, args.background);
+            if (!colours) return fail_usage(colours.error().message, kSmoothCommand);
+            auto png = format_smooth_png(report, *colours);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);
             break;
@@ -197,6 +201,7 @@ Command add_smooth_command(CLI::App& app) {
     cmd->add_option("-o,--output-file", args->output_file,
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
+    add_colour_options(*cmd, args->foreground, args->background);
     return Command{cmd, [args] { return run_smooth(*args); }};
 }
 
