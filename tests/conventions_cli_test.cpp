@@ -212,6 +212,8 @@ TEST_F(ConventionsCli, BitmapOnlyFontIsNamedAndItsHeadUnitsPerEmReported) {
     const std::vector<std::vector<std::string>> commands = {
         {"render", kEmoji, "--text", "\xf0\x9f\x98\x80", "-o", "out.png"},
         {"glyph", kEmoji, "--char", "U+1F600", "-o", "out.png"},
+        // 'a' is not in the font either: the font's problem is said alone, without a warning.
+        {"glyph", kEmoji, "--text", "a\xf0\x9f\x98\x80", "-o", "out.png"},
         {"outline", kEmoji, "--char", "U+1F600", "-o", "out.svg"},
         {"atlas", kEmoji, "--chars", "\xf0\x9f\x98\x80", "-o", "out.png", "--json", "out.json"},
     };

@@ -77,7 +77,8 @@ int run_atlas(AtlasArgs& args) {
     for (char32_t c : distinct) {
         auto gid = font->glyph_for_char(c);
         if (!gid) {
-            if (missing.count++ == 0) missing.first_code_point = c;
+            if (missing.count == 0) missing.first_code_point = c;
+            ++missing.count;
         }
         // Each missing character gets its own copy of .notdef, so every character listed in
         // the JSON has its rectangle.

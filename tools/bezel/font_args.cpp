@@ -92,6 +92,9 @@ Expected<Font> open_font(const FontArgs& args) {
 
     auto font = Font::open(args.file, args.face_index);
     if (!font) return font.error();
+    // Every command that opens a font this way draws or lists outlines: say what is wrong with
+    // a bitmap-only font once, before any per-character message.
+    if (Status s = font->require_outlines(); !s) return s.error();
     if (!args.variations.empty()) {
         auto settings = parse_variations(args.variations);
         if (!settings) return Error{"--variations: " + settings.error().message};

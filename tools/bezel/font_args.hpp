@@ -41,7 +41,8 @@ Expected<std::vector<VariationSetting>> parse_variations(const std::string& spec
 bool looks_like_font_path(const std::string& word);
 
 // Opens args.file at args.face_index and applies args.variations. Errors name the file and, for
-// variations, the axis; a missing file or a directory is reported as such before FreeType sees it.
+// variations, the axis; a missing file or a directory is reported as such before FreeType sees it,
+// and a bitmap-only font (no outlines to draw: Font::require_outlines) is an error too.
 Expected<Font> open_font(const FontArgs& args);
 
 }  // namespace bezel::cli
