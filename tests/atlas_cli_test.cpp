@@ -107,7 +107,7 @@ TEST(AtlasCli, BadInputGivesOneErrorLineAndNoFile) {
         {{"atlas", kDejaVu, "--chars", "", "-o", "a.png", "--json", "a.json"}, 2},
         {{"atlas", kDejaVu, "--chars", "a\xff", "-o", "a.png", "--json", "a.json"}, 2},
         {{"atlas", kDejaVu, "--chars", "ab", "--font-size", "0", "-o", "a.png", "--json", "a.json"}, 2},
-        {{"atlas", kDejaVu, "--chars", "\xe4\xb8\xad", "-o", "a.png", "--json", "a.json"}, 1},
+        {{"atlas", kDejaVu, "--chars", "\xe4\xb8\xad", "--strict", "-o", "a.png", "--json", "a.json"}, 1},
         {{"atlas", kDejaVu, "--chars", "ab", "--json", "a.json"}, 2},
     };
     for (const auto& [args, code] : cases) {

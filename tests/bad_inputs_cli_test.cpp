@@ -66,6 +66,9 @@ void make_bad_files(const fs::path& dir) {
     write_file(dir / "empty.ttf", "");
     write_file(dir / "text.ttf", "this is not a font\n");
     write_file(dir / "latin1.txt", "a\xE9z\n");  // é in Latin-1: not UTF-8
+    // A colour-bitmap-only font (CBDT, no outlines), under the name people know it by.
+    write_file(dir / "NotoColorEmoji.ttf",
+               test::slurp(std::string(BEZEL_FONTS_DIR) + "/noto-color-emoji/NotoColorEmoji-subset.ttf"));
     fs::create_directory(dir / "a-directory.ttf");
 }
 
@@ -112,9 +115,21 @@ std::vector<BadInput> catalogue() {
         {"invalid UTF-8 in a --text-file", {"render", kDejaVu, "--text-file", "latin1.txt", "-o", "out.png"}, 1, "latin1.txt: text byte 1"},
         {"invalid UTF-8 --char", {"outline", kDejaVu, "--char", "\xC3", "-o", "out.svg"}, 2, "--char: '\xC3': text byte 0"},
         {"invalid UTF-8 --text (glyph)", {"glyph", kDejaVu, "--text", "a\x80z", "-o", "out.png"}, 2, "--text: text byte 1"},
-        {"--text past kMaxTextCodePoints", {"outline", kDejaVu, "--text", std::string(1001, 'a')}, 2, "--text: 1001 characters"},
+        {"--text past the 1000-character limit", {"outline", kDejaVu, "--text", std::string(1001, 'a')}, 2, "--text: 1001 characters"},
         {"tolerance out of range", {"glyph", kDejaVu, "--char", "g", "--tolerance", "0", "-o", "out.png"}, 2, "--tolerance 0: expected"},
         {"missing --text-file", {"render", kDejaVu, "--text-file", "missing.txt", "-o", "out.png"}, 1, "missing.txt"},
+        {"colour bitmap font (no outlines)", {"render", "NotoColorEmoji.ttf", "--text", "\xF0\x9F\x98\x80", "-o", "out.png"}, 1, "NotoColorEmoji.ttf: a bitmap-only font (no outlines)"},
+        {"colour bitmap font (glyph)", {"glyph", "NotoColorEmoji.ttf", "--char", "U+1F600", "-o", "out.png"}, 1, "NotoColorEmoji.ttf: a bitmap-only font"},
+        {"a character the font lacks, with --strict", {"render", kDejaVu, "--text", "a\xE4\xB8\xAD", "--strict", "-o", "out.png"}, 1, "no glyph for U+4E2D"},
+        {"a character the font lacks, with --strict (atlas)", {"atlas", kDejaVu, "--chars", "a\xE4\xB8\xAD", "--strict", "-o", "out.png", "--json", "out.json"}, 1, "no glyph for U+4E2D"},
+        {"misspelt option", {"render", kDejaVu, "--font-sise", "12"}, 2, "unknown option --font-sise; did you mean --font-size?"},
+        {"misspelt command", {"rendr", "Hello"}, 2, "rendr: not a bezel command; did you mean render?"},
+        {"malformed --script", {"render", kDejaVu, "--text", "g", "--script", "Ar", "-o", "out.png"}, 2, "--script: script 'Ar'"},
+        {"unknown --script", {"render", kDejaVu, "--text", "g", "--script", "Xyzw", "-o", "out.png"}, 2, "--script: script 'Xyzw'"},
+        {"malformed --language", {"render", kDejaVu, "--text", "g", "--language", "en us", "-o", "out.png"}, 2, "--language: language 'en us'"},
+        {"malformed --features", {"render", kDejaVu, "--text", "g", "--features", "kern=x", "-o", "out.png"}, 2, "--features: feature 'kern=x'"},
+        {"margin out of range", {"render", kDejaVu, "--text", "g", "--margin", "-5", "-o", "out.png"}, 2, "--margin: -5 is not in 0 to 32768"},
+        {"misspelt colour name", {"fill", "M0 0h1v1z", "--width", "4", "--height", "4", "--foreground", "yelow", "-o", "out.png"}, 2, "'yelow': not a CSS colour name"},
     };
 }
 

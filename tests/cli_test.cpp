@@ -135,8 +135,9 @@ TEST_F(Cli, RuntimeErrorsExitOneWithOneLineNamingInput) {
     expect_runtime_error(run({"outline", kDejaVu, "--gid", "6253"}), "--gid 6253");
     expect_runtime_error(run({"outline", kDejaVu, "--gid", "4000000000"}), "--gid");
     expect_runtime_error(run({"outline", kDejaVu, "--char", "g", "--face-index", "3"}), "DejaVuSans.ttf");
-    // A private-use code point DejaVu Sans does not map.
-    expect_runtime_error(run({"outline", kDejaVu, "--char", "U+10FFFD"}), "U+10FFFD");
+    // A private-use code point DejaVu Sans does not map: an error with --strict (a warning and
+    // .notdef without, MissingGlyphCli in bad_inputs_cli_test.cpp).
+    expect_runtime_error(run({"outline", kDejaVu, "--char", "U+10FFFD", "--strict"}), "U+10FFFD");
     expect_runtime_error(run({"outline", kDejaVu, "--char", "g", "--variations", "wght=700"}), "wght");
 }
 

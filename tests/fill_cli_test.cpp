@@ -26,10 +26,12 @@ CliRun run(std::vector<std::string> args) {
     return bezel::test::run_bezel(args, scratch().path());
 }
 
-// The PGM on stdout as a mask (asserting its header).
-bezel::Mask pgm(const std::vector<std::string>& args, int w, int h) {
+// The PGM on stdout as a mask (asserting its header): the coverage (--coverage) unless
+// `picture`, then the picture in the colours `args` give (black on white by default).
+bezel::Mask pgm(const std::vector<std::string>& args, int w, int h, bool picture = false) {
     std::vector<std::string> a = args;
     a.insert(a.end(), {"--width", std::to_string(w), "--height", std::to_string(h), "-O", "pgm"});
+    if (!picture) a.push_back("--coverage");
     CliRun r = run(a);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     const std::string header = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
@@ -100,7 +102,11 @@ TEST_F(FillCli, PngMatchesGoldenAndPgm) {
     EXPECT_TRUE(r.out.empty());
     auto got = bezel::read_png_gray(out);
     ASSERT_TRUE(got.ok()) << got.error().message;
-    EXPECT_EQ(*got, pgm({args[0], "--fill", "evenodd"}, 40, 40));
+    // Ink on paper: black on white is the coverage inverted, byte for byte.
+    const bezel::Mask coverage = pgm({args[0], "--fill", "evenodd"}, 40, 40);
+    EXPECT_EQ(*got, pgm({args[0], "--fill", "evenodd"}, 40, 40, true));
+    for (int y = 0; y < 40; ++y)
+        for (int x = 0; x < 40; ++x) ASSERT_EQ(got->at(x, y), 255 - coverage.at(x, y)) << x << "," << y;
     if (bezel::test::update_golden()) return bezel::test::replace_golden(out, golden);
     auto want = bezel::read_png_gray(golden);
     ASSERT_TRUE(want.ok()) << want.error().message;
@@ -127,7 +133,7 @@ TEST_F(FillCli, ErrorsNameTheirInput) {
         {{"M0,0 L5,5 Q", "--width", "8", "--height", "8"}, 2, "offset"},
         {{"L5,5", "--width", "8", "--height", "8"}, 2, "offset 0"},
         {{"M0,0 h1 v1 z", "--width", "0", "--height", "8"}, 2, "--width 0"},
-        {{"M0,0 h1 v1 z", "--width", "8", "--height", "100000"}, 2, "kMaxFillDim"},
+        {{"M0,0 h1 v1 z", "--width", "8", "--height", "100000"}, 2, "--height 100000: expected 1 to 8192 pixels"},
         {{"M0,0 h1 v1 z", "--width", "8", "--height", "8", "--transform", "1,0,0,1,0"}, 2, "--transform"},
         {{"M0,0 h1 v1 z", "--width", "8", "--height", "8", "--transform", "1,0,0,1,0,x"}, 2, "'x'"},
         {{"M0,0 h1 v1 z", "--width", "8", "--height", "8", "--transform", "1,0,0,1,0,inf"}, 2, "--transform"},
@@ -137,7 +143,7 @@ TEST_F(FillCli, ErrorsNameTheirInput) {
         {{"M0,0 h1 v1 z", "--width", "8", "--height", "8", "-o", "no/dir/x.png"}, 1, "no/dir/x.png"},
         // 1e12 px of curve at 1e-9 px tolerance: past the flattener's per-curve cap.
         {{"M0,0 Q1e12,0 1e12,1e12 Z", "--width", "8", "--height", "8", "--tolerance", "1e-9"},
-         1, "kMaxSegmentsPerCurve"},
+         1, "65536 segments per curve"},
     };
     for (const Case& c : cases) {
         CliRun r = run(c.args);

@@ -317,19 +317,27 @@ TEST_F(GlyphCli, PicturesMatchGoldens) {
 }
 
 TEST_F(GlyphCli, PgmHoldsTheSamePixelsAsJson) {
+    // --coverage: the JSON's bytes; the picture (default): black ink on white paper, the same
+    // coverage inverted byte for byte.
     const std::string pgm = (scratch().path() / "k.pgm").string();
-    CliRun r = run({kDejaVu, "--char", "k", "--font-size", "13", "-o", pgm});
+    const std::string picture = (scratch().path() / "k-picture.pgm").string();
+    CliRun r = run({kDejaVu, "--char", "k", "--font-size", "13", "--coverage", "-o", pgm});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = run({kDejaVu, "--char", "k", "--font-size", "13", "-o", picture});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     json doc = run_json({kDejaVu, "--char", "k", "--font-size", "13"});
-    const std::string bytes = bezel::test::slurp(pgm);
+    const std::string bytes = bezel::test::slurp(pgm), ink = bezel::test::slurp(picture);
     const int w = doc[0]["width"], h = doc[0]["height"];
     const std::string header = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
     ASSERT_EQ(bytes.substr(0, header.size()), header);
     ASSERT_EQ(bytes.size(), header.size() + std::size_t(w * h));
+    ASSERT_EQ(ink.size(), bytes.size());
     for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            EXPECT_EQ(static_cast<unsigned char>(bytes[header.size() + y * w + x]),
-                      hex_byte(doc[0]["rows"][y], x));
+        for (int x = 0; x < w; ++x) {
+            const std::size_t at = header.size() + std::size_t(y * w + x);
+            EXPECT_EQ(static_cast<unsigned char>(bytes[at]), hex_byte(doc[0]["rows"][y], x));
+            EXPECT_EQ(static_cast<unsigned char>(ink[at]), 255 - hex_byte(doc[0]["rows"][y], x));
+        }
 }
 
 TEST_F(GlyphCli, ErrorsNameTheirInput) {
@@ -343,15 +351,16 @@ TEST_F(GlyphCli, ErrorsNameTheirInput) {
         {{kDejaVu, "--char", "a", "--gid", "3"}, 2, ""},                          // two chosen
         {{kDejaVu, "--char", "a", "--offset", "1"}, 2, "--offset"},
         {{kDejaVu, "--char", "a", "--offset", "nan,0"}, 2, "--offset"},
-        {{kDejaVu, "--char", "a", "--offset", "1e9,0"}, 2, "kMaxGlyphOffsetPx"},
+        {{kDejaVu, "--char", "a", "--offset", "1e9,0"}, 2, "beyond ±16384 px"},
         {{kDejaVu, "--char", "a", "--tolerance", "0"}, 2, "--tolerance"},
         {{kDejaVu, "--char", "a", "--lcd", "rbg"}, 2, "--lcd"},
         {{kDejaVu, "--char", "a", "-o", "a.bmp"}, 2, "a.bmp"},
         {{kDejaVu, "--gid", "999999"}, 1, "--gid 999999"},
-        {{kDejaVu, "--char", "U+10FFFF"}, 1, "U+10FFFF"},
+        {{kDejaVu, "--char", "U+10FFFF", "--strict"}, 1, "U+10FFFF"},
         {{"no-such-font.ttf", "--char", "a"}, 1, "no-such-font.ttf"},
         {{kDejaVu, "--char", "a", "--font-size", "0"}, 2, "--font-size: '0'"},
-        {{kDejaVu, "--text", std::string(600, 'W'), "--font-size", "300"}, 1, "kMaxGlyphOutputPixels"},
+        {{kDejaVu, "--text", std::string(600, 'W'), "--font-size", "300"}, 1,
+         "more than 16777216 pixels, the most one call renders"},
         {{kDejaVu, "--char", " ", "-O", "png"}, 1, "empty"},
         {{kDejaVu, "--char", "a", "-o", "no/such/dir/a.png"}, 1, "no/such/dir/a.png"},
     };

@@ -33,6 +33,28 @@ TEST(ParseColor, AcceptsHbViewForms) {
     EXPECT_EQ(*parse_color("transparent"), (Rgba8{0, 0, 0, 0}));
 }
 
+TEST(ParseColor, AcceptsEveryCssNamedColourCaseInsensitively) {
+    // CSS Color Level 4 values, including the ones where X11's rgb.txt differs (gray, green,
+    // maroon, purple) and the late additions (rebeccapurple).
+    EXPECT_EQ(*parse_color("yellow"), (Rgba8{255, 255, 0, 255}));
+    EXPECT_EQ(*parse_color("RebeccaPurple"), (Rgba8{0x66, 0x33, 0x99, 255}));
+    EXPECT_EQ(*parse_color("gray"), (Rgba8{128, 128, 128, 255}));
+    EXPECT_EQ(*parse_color("grey"), *parse_color("gray"));
+    EXPECT_EQ(*parse_color("maroon"), (Rgba8{128, 0, 0, 255}));
+    EXPECT_EQ(*parse_color("purple"), (Rgba8{128, 0, 128, 255}));
+    EXPECT_EQ(*parse_color("aliceblue"), (Rgba8{0xF0, 0xF8, 0xFF, 255}));       // first
+    EXPECT_EQ(*parse_color("YELLOWGREEN"), (Rgba8{0x9A, 0xCD, 0x32, 255}));     // last
+    EXPECT_EQ(*parse_color("lightgoldenrodyellow"), (Rgba8{0xFA, 0xFA, 0xD2, 255}));
+    EXPECT_EQ(*parse_color("cyan"), *parse_color("aqua"));
+}
+
+TEST(ParseColor, AnUnknownNameSaysItIsNotACssName) {
+    auto c = parse_color("yelow");
+    ASSERT_FALSE(c);
+    EXPECT_NE(c.error().message.find("'yelow': not a CSS colour name"), std::string::npos)
+        << c.error().message;
+}
+
 TEST(ParseColor, ErrorsNameTheText) {
     for (const char* bad : {"#GG0000", "#12345", "", "F80", "#", "reddish", "#FF00000"}) {
         auto c = parse_color(bad);

@@ -203,8 +203,7 @@ TEST(SvgParseErrors, RejectBadArcTolerance) {
 TEST(SvgParseErrors, InputLongerThanTheLimitIsRefused) {
     std::string big(kMaxSvgPathLength + 1, ' ');
     big[0] = 'M';
-    EXPECT_EQ(parse_error(big), "path data: 16777217 bytes exceeds the limit of 16777216 "
-                                "(kMaxSvgPathLength)");
+    EXPECT_EQ(parse_error(big), "path data: 16777217 bytes exceeds the limit of 16777216 bytes");
     big.pop_back();
     big.replace(0, 4, "M1 1");
     EXPECT_EQ(parse_ok(big).points().size(), 1u);  // exactly at the limit is fine
@@ -218,7 +217,9 @@ TEST(SvgParseErrors, ArcsCannotExpandPastThePointLimit) {
     std::string data = "M0 0";
     for (int i = 0; i < 6000; ++i) data += i % 2 ? "A1 1 0 1 1 0 0" : "A1 1 0 1 1 1 0";
     std::string e = parse_error(data, o);
-    EXPECT_NE(e.find("points (kMaxSvgPathPoints)"), std::string::npos) << e;
+    EXPECT_NE(e.find("path has more than " + std::to_string(kMaxSvgPathPoints) + " points"),
+              std::string::npos)
+        << e;
 }
 
 TEST(SvgParseErrors, RandomBytesNeverCrashAndAlwaysExplain) {

@@ -24,6 +24,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "font_args.hpp"
+#include "missing_glyphs.hpp"
 
 namespace bezel::cli {
 namespace {
@@ -39,6 +40,7 @@ struct AtlasArgs {
     std::string chars;
     std::string output_file;   // -o: the PNG
     std::string json_file;     // --json (default: stdout)
+    bool strict = false;       // --strict
     CLI::App* cmd = nullptr;
 };
 
@@ -81,16 +83,22 @@ int run_atlas(AtlasArgs& args) {
 
     std::vector<Entry> entries;
     std::vector<AtlasRect> sizes;
+    MissingGlyphs missing;
     for (char32_t c : distinct) {
         auto gid = font->glyph_for_char(c);
-        if (!gid)
-            return fail_runtime(args.font.file + ": no glyph for " + format_code_point(c) +
-                                " (--chars)");
-        auto box = rasterizer.measure(*gid, options);
+        if (!gid) {
+            if (missing.count == 0) missing.first_code_point = c;
+            ++missing.count;
+        }
+        // Each missing character gets its own copy of .notdef, so every character listed in
+        // the JSON has its rectangle.
+        auto box = rasterizer.measure(gid.value_or(0), options);
         if (!box) return fail_runtime(box.error().message);
-        entries.push_back({c, *gid, *box});
+        entries.push_back({c, gid.value_or(0), *box});
         sizes.push_back({0, 0, box->width, box->height});
     }
+    if (Status s = report_missing_glyphs(font->file(), missing, args.strict); !s)
+        return fail_runtime(s.error().message);
     auto packing = pack_shelves(sizes, kMaxImageDim);
     if (!packing) return fail_runtime(packing.error().message);
 
@@ -136,10 +144,12 @@ Command add_atlas_command(CLI::App& app) {
     args->cmd = cmd;
     args->font.size_px = kDefaultAtlasSizePx;
     cmd->footer(
-        "The texture is a gray PNG of coverage (0 empty, 255 full), shelf-packed with 1 px of\n"
+        "The texture is a gray PNG of coverage (0 empty, 255 full), not a picture: a toolkit\n"
+        "tints it when it draws, so there are no colours to choose. Shelf-packed with 1 px of\n"
         "padding, its width a power of two, its height tight. The JSON lists per character its\n"
         "gid, texture rectangle x/y/width/height, bitmap left/top (as FreeType) and advance.\n"
         "Glyphs are drawn at whole-pixel pens, hinted as --hinting says.\n"
+        "A character the font lacks gets its .notdef glyph, with a warning (--strict: an error).\n"
         "Examples:\n"
         "  bezel atlas --chars 'abcdefghijklmnopqrstuvwxyz' --font-size 24 -o atlas.png "
         "--json atlas.json\n"
@@ -154,6 +164,7 @@ Command add_atlas_command(CLI::App& app) {
         ->type_name("FILE");
     cmd->add_option("--json", args->json_file, "The metrics as JSON (default: stdout)")
         ->type_name("FILE");
+    add_strict_option(*cmd, args->strict);
     return Command{cmd, [args] { return run_atlas(*args); }};
 }
 

@@ -7,6 +7,8 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <charconv>
+#include <cmath>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -39,6 +41,19 @@ std::optional<double> parse_number(const std::string& text) {
     const double v = std::strtod(text.c_str(), &end);
     if (text.empty() || end != text.c_str() + text.size()) return std::nullopt;
     return v;
+}
+
+std::string plain_number(double v) {
+    if (std::isnan(v)) return "nan";
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    if (v == 0) return "0";  // also -0: a sign on zero only puzzles a reader
+    char buf[400];  // fixed notation of up to 1e15 with 17 significant digits fits easily
+    const double a = std::fabs(v);
+    const std::chars_format format =
+        a >= 1e-6 && a < 1e15 ? std::chars_format::fixed : std::chars_format::general;
+    // Without a precision, to_chars gives the shortest form that round-trips.
+    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, format);
+    return ec == std::errc() ? std::string(buf, end) : std::to_string(v);
 }
 
 Expected<char32_t> parse_code_point(std::string_view arg) {

@@ -58,6 +58,11 @@ std::string format_code_point(char32_t code_point);
 // anything after the number.
 std::optional<double> parse_number(const std::string& text);
 
+// A number as people write it: the shortest decimal that reads back as the same double, with no
+// exponent for magnitudes from 1e-6 to 1e15 ("10", "0.1", "-2.5", "32768"), and an exponent
+// beyond them ("1e+20"); "nan", "inf" and "-inf" as such. For output and messages alike.
+std::string plain_number(double v);
+
 enum class OutputFormat { Text, Json, Svg };
 // "text", "json", "svg".
 const char* format_name(OutputFormat format);

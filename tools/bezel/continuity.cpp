@@ -9,6 +9,7 @@
 #include "bezel/smooth.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "parse_check.hpp"
 #include "smooth_output.hpp"
 
 namespace bezel::cli {
@@ -57,7 +58,7 @@ Command add_continuity_command(CLI::App& app) {
     cmd->add_option("--tolerance", args->tolerance,
                     "Relative tolerance of the tests (default 1e-9)")
         ->type_name("T")
-        ->check(CLI::PositiveNumber);
+        ->check(positive_number());
     cmd->add_option("-O,--output-format", args->format,
                     "text or json; default: from the -o file's extension, else text")
         ->type_name("FORMAT")

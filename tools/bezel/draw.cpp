@@ -1,14 +1,8 @@
 #include "draw.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include "bezel/image.hpp"
 #include "bezel/raster.hpp"
@@ -43,7 +37,8 @@ void stroke_polyline(const std::vector<Point>& pts, double hw, Polylines& out) {
     }
 }
 
-Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h) {
+Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h,
+                              const PictureColours& colours) {
     Rasterizer raster;
     std::vector<Mask> masks;
     for (const InkLayer& layer : layers) {
@@ -52,29 +47,15 @@ Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h)
         if (!st) return st.error();
         masks.push_back(std::move(m));
     }
-    Mask out(w, h);
+    Image out(w, h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             double ink = 0.0;
             for (std::size_t i = 0; i < layers.size(); ++i)
                 ink = std::max(ink, layers[i].ink * masks[i].at(x, y) / 255.0);
-            out.at(x, y) = static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - ink)));
+            out.at(x, y) = paint(colours, ink);
         }
-
-    // write_png_gray writes files: go through a private temporary one, return its bytes.
-    std::string tmpl = (std::filesystem::temp_directory_path() / "bezel-picture-XXXXXX.png").string();
-    int fd = ::mkstemps(tmpl.data(), 4);
-    if (fd < 0) return Error{"cannot create a temporary file for the PNG"};
-    ::close(fd);
-    auto st = write_png_gray(tmpl, out.view());
-    std::string bytes;
-    if (st) {
-        std::ifstream in(tmpl, std::ios::binary);
-        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
-    std::filesystem::remove(tmpl);
-    if (!st) return st.error();
-    return bytes;
+    return picture_png(out, colours.gray(), colours.translucent());
 }
 
 }  // namespace bezel::cli

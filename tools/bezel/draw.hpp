@@ -9,6 +9,7 @@
 
 #include "bezel/expected.hpp"
 #include "bezel/flatten.hpp"
+#include "picture.hpp"
 
 namespace bezel::cli {
 
@@ -40,8 +41,9 @@ struct InkLayer {
 };
 
 // Fills every layer into a w×h mask, inks each pixel with the darkest layer (max of ink ×
-// coverage) on white paper, and returns the PNG file's bytes. Errors come from the rasterizer
-// or from writing the PNG.
-Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h);
+// coverage) in `colours` (picture.hpp: black on white, a gray PNG, by default), and returns the
+// PNG file's bytes. Errors come from the rasterizer or from encoding the PNG.
+Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h,
+                              const PictureColours& colours);
 
 }  // namespace bezel::cli

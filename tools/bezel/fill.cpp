@@ -1,5 +1,5 @@
-// `bezel fill`: any vector path (SVG path data) rasterized by bezel into a W × H coverage image,
-// as PNG, PGM or ASCII art.
+// `bezel fill`: any vector path (SVG path data) rasterized by bezel into a W × H image: a picture
+// (ink on paper, picture.hpp) or the raw coverage (--coverage), as PNG, PGM or ASCII art.
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <memory>
@@ -10,6 +10,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "glyph_bitmap.hpp"
+#include "picture.hpp"
 
 namespace bezel::cli {
 namespace {
@@ -22,6 +23,8 @@ enum class FillFormat { Png, Pgm, Ascii };
 
 struct FillArgs {
     std::string path_data, format, output_file, fill = "nonzero", transform, overlap = "accumulate";
+    std::string foreground, background;   // picture colours ("": black on white)
+    bool coverage = false;                // --coverage: the coverage itself, not a picture
     int width = 0, height = 0;
     double tolerance_px = kDefaultRasterTolerancePx;
 };
@@ -59,8 +62,8 @@ Expected<Affine> parse_transform(const std::string& text) {
 
 Status check_dim(const char* option, int v) {
     if (v >= 1 && v <= kMaxFillDim) return ok_status();
-    return Error{std::string(option) + " " + std::to_string(v) + ": expected 1.." +
-                 std::to_string(kMaxFillDim) + " pixels (kMaxFillDim)"};
+    return Error{std::string(option) + " " + std::to_string(v) + ": expected 1 to " +
+                 std::to_string(kMaxFillDim) + " pixels"};
 }
 
 int run_fill(const FillArgs& args) {
@@ -87,19 +90,29 @@ int run_fill(const FillArgs& args) {
         return fail_runtime("PATH: " + s.error().message);
 
     std::string document;
-    switch (*format) {
-        case FillFormat::Png: {
-            auto png = encode_png_gray(mask.view());
+    if (*format == FillFormat::Ascii) {
+        document = ascii_art(mask.view());
+    } else if (args.coverage && *format == FillFormat::Pgm) {
+        const std::vector<std::uint8_t> pgm = encode_pgm(mask.view());
+        document.assign(pgm.begin(), pgm.end());
+    } else if (args.coverage) {
+        auto png = encode_png_gray(mask.view());
+        if (!png) return fail_runtime(png.error().message);
+        document.assign(png->begin(), png->end());
+    } else {
+        auto colours = picture_colours(args.foreground, args.background);
+        if (!colours) return fail_usage(colours.error().message, kFillCommand);
+        if (*format == FillFormat::Pgm && !colours->gray())
+            return fail_usage("-O pgm: a PGM picture is gray; give gray opaque colours, or write PNG",
+                              kFillCommand);
+        const Image picture = paint_coverage(mask.view(), *colours);
+        if (*format == FillFormat::Pgm) {
+            document = picture_pnm(picture, true);
+        } else {
+            auto png = picture_png(picture, colours->gray(), colours->translucent());
             if (!png) return fail_runtime(png.error().message);
-            document.assign(png->begin(), png->end());
-            break;
+            document = std::move(*png);
         }
-        case FillFormat::Pgm: {
-            const std::vector<std::uint8_t> pgm = encode_pgm(mask.view());
-            document.assign(pgm.begin(), pgm.end());
-            break;
-        }
-        case FillFormat::Ascii: document = ascii_art(mask.view()); break;
     }
     return write_result(args.output_file, document);
 }
@@ -110,10 +123,11 @@ Command add_fill_command(CLI::App& app) {
     auto args = std::make_shared<FillArgs>();
     CLI::App* cmd = app.add_subcommand("fill", "Rasterize any vector path (SVG path data)");
     cmd->footer(
-        "The path is in pixels, y down, mapped by --transform; the image is its coverage\n"
-        "(0 black = empty, 255 white = covered), exact area per pixel, curves flattened within\n"
-        "--tolerance. Formats: png, pgm, ascii (one character per pixel); default: from the -o\n"
-        "file's extension (.png, .pgm, .txt), else ascii.\n"
+        "The path is in pixels, y down, mapped by --transform, filled with exact area per pixel,\n"
+        "curves flattened within --tolerance. PNG and PGM are a picture, ink on paper (black on\n"
+        "white unless --foreground/--background), or with --coverage the coverage itself, gray\n"
+        "(0 = empty, 255 = covered). Formats: png, pgm, ascii (one character per pixel); default:\n"
+        "from the -o file's extension (.png, .pgm, .txt), else ascii.\n"
         "Examples:\n"
         "  bezel fill 'M2,2 L30,4 L16,28 Z' --width 32 --height 32 -o triangle.png\n"
         "  bezel fill 'M0,0 h10 v10 h-10 z M2,2 h6 v6 h-6 z' --width 12 --height 12 --fill evenodd\n"
@@ -135,6 +149,11 @@ Command add_fill_command(CLI::App& app) {
                     "resolved exactly)")
         ->capture_default_str()
         ->check(CLI::IsMember({"accumulate", "accurate"}));
+    add_colour_options(*cmd, args->foreground, args->background);
+    cmd->add_flag("--coverage", args->coverage,
+                  "PNG/PGM of the coverage itself (gray, 255 = covered) instead of a picture")
+        ->excludes("--foreground")
+        ->excludes("--background");
     return Command{cmd, [args] { return run_fill(*args); }};
 }
 

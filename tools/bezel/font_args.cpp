@@ -60,7 +60,7 @@ void add_font_args(CLI::App& cmd, FontArgs& args) {
         ->type_name("FILE");
     cmd.add_option("--face-index", args.face_index, "Face to use in a font collection")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(non_negative_number());
     cmd.add_option("--font-size", args.size_px, "Em size in pixels")
         ->capture_default_str()
         ->type_name("PX")
@@ -115,6 +115,9 @@ Expected<Font> open_font(const FontArgs& args) {
 
     auto font = Font::open(args.file, args.face_index);
     if (!font) return font.error();
+    // Every command that opens a font this way draws or lists outlines: say what is wrong with
+    // a bitmap-only font once, before any per-character message.
+    if (Status s = font->require_outlines(); !s) return s.error();
     if (!args.variations.empty()) {
         auto settings = parse_variations(args.variations);
         if (!settings) return Error{"--variations: " + settings.error().message};

@@ -55,7 +55,8 @@ Expected<std::optional<std::string>> lone_word_as_text(std::string& font_file, c
                                                        const std::string& text_option);
 
 // Opens args.file at args.face_index and applies args.variations. Errors name the file and, for
-// variations, the axis; a missing file or a directory is reported as such before FreeType sees it.
+// variations, the axis; a missing file or a directory is reported as such before FreeType sees it,
+// and a bitmap-only font (no outlines to draw: Font::require_outlines) is an error too.
 Expected<Font> open_font(const FontArgs& args);
 
 }  // namespace bezel::cli

@@ -11,6 +11,7 @@
 #include "font_args.hpp"
 #include "glyph_bitmap.hpp"
 #include "glyph_choice.hpp"
+#include "missing_glyphs.hpp"
 
 namespace bezel::cli {
 namespace {
@@ -24,6 +25,9 @@ struct GlyphArgs {
     std::string fill = "nonzero", lcd, offset, flatten = "wang", overlap = "auto";
     double tolerance_px = kDefaultRasterTolerancePx;
     CLI::App* cmd = nullptr;
+    bool strict = false;   // --strict
+    std::string foreground, background;   // picture colours ("": black on white)
+    bool coverage = false;                // --coverage: PNG/PGM of the coverage itself
 };
 
 const std::string kGlyphCommand = "bezel glyph";
@@ -53,8 +57,8 @@ Expected<Vec2> parse_offset(const std::string& text) {
             return Error{"--offset '" + text + "': expected DX,DY (two numbers, pixels)"};
         v[i] = *number;
         if (std::fabs(v[i]) > kMaxGlyphOffsetPx)
-            return Error{"--offset '" + text + "': beyond ±" + std::to_string(int(kMaxGlyphOffsetPx)) +
-                         " px (kMaxGlyphOffsetPx)"};
+            return Error{"--offset '" + text + "': beyond ±" + plain_number(kMaxGlyphOffsetPx) +
+                         " px"};
     }
     return Vec2{v[0], v[1]};
 }
@@ -93,6 +97,8 @@ int run_glyph(GlyphArgs& args) {
     if (!font) return fail_runtime(font.error().message);
     auto requests = requested_glyphs(args.which, *font);
     if (!requests) return fail_runtime(requests.error().message);
+    if (Status s = report_missing_glyphs(font->file(), missing_of(*requests), args.strict); !s)
+        return fail_runtime(s.error().message);
 
     // Each glyph's outline is loaded once; its box is added to the pixel budget before its
     // pixels are allocated.
@@ -107,7 +113,7 @@ int run_glyph(GlyphArgs& args) {
         if (pixels > kMaxGlyphOutputPixels)
             return fail_runtime(font->file() + ": the glyphs need more than " +
                                 std::to_string(kMaxGlyphOutputPixels) +
-                                " pixels (kMaxGlyphOutputPixels); use a smaller --font-size");
+                                " pixels, the most one call renders; use a smaller --font-size");
         GlyphBitmap g{r.gid, font->glyph_name(r.gid), r.code_point, box, fill.format,
                       fill.lcd_order, {}};
         const int row_bytes = box.width * g.bytes_per_pixel();
@@ -124,7 +130,14 @@ int run_glyph(GlyphArgs& args) {
         case GlyphFormat::Json: document = glyphs_json(glyphs, options); break;
         case GlyphFormat::Png:
         case GlyphFormat::Pnm: {
-            auto picture = *format == GlyphFormat::Png ? glyphs_png(glyphs) : glyphs_pnm(glyphs);
+            std::optional<PictureColours> colours;
+            if (!args.coverage) {
+                auto parsed = picture_colours(args.foreground, args.background);
+                if (!parsed) return fail_usage(parsed.error().message, kGlyphCommand);
+                colours = *parsed;
+            }
+            auto picture = *format == GlyphFormat::Png ? glyphs_png(glyphs, colours)
+                                                       : glyphs_pnm(glyphs, colours);
             if (!picture) return fail_runtime(font->file() + ": " + picture.error().message);
             document = std::move(*picture);
             break;
@@ -151,8 +164,9 @@ Command add_glyph_command(CLI::App& app) {
         "array with one object per glyph: gid, name, char and code_point (when known), size,\n"
         "left, top, width (pixels), height, advance, mode (gray|lcd-rgb|lcd-bgr), overlap\n"
         "(accumulate|accurate) and rows (one hex string per row, 2 digits per pixel, 6 for LCD);\n"
-        "png and pgm (PPM with --lcd): all glyphs side by side, one column apart, on a common\n"
-        "baseline.\n"
+        "png and pgm (PPM with --lcd or colours): all glyphs side by side, one column apart, on\n"
+        "a common baseline, as a picture: ink on paper, black on white unless --foreground/\n"
+        "--background; with --coverage the coverage itself (0 = empty, 255 = covered).\n"
         "Examples:\n"
         "  bezel glyph --char g --font-size 24\n"
         "  bezel glyph font.ttf --text 'Hamburg' --font-size 32 -o hamburg.png\n"
@@ -178,6 +192,13 @@ Command add_glyph_command(CLI::App& app) {
                     "auto (accurate for glyphs marked as overlapping) or accurate (for all)")
         ->capture_default_str()
         ->check(CLI::IsMember({"auto", "accurate"}));
+    add_strict_option(*cmd, args->strict);
+    add_colour_options(*cmd, args->foreground, args->background);
+    cmd->add_flag("--coverage", args->coverage,
+                  "png/pgm of the coverage itself (gray, or RGB subpixels with --lcd; 255 = "
+                  "covered) instead of a picture")
+        ->excludes("--foreground")
+        ->excludes("--background");
     return Command{cmd, [args] { return run_glyph(*args); }};
 }
 

@@ -14,6 +14,7 @@
 #include "bezel/glyph.hpp"
 #include "bezel/image.hpp"
 #include "glyph_choice.hpp"
+#include "picture.hpp"
 
 namespace CLI { class App; }
 
@@ -55,10 +56,14 @@ std::string glyphs_ascii(const std::vector<GlyphBitmap>& glyphs, const GlyphRend
 // The JSON contract: an array, one object per glyph (see the help footer in glyph.cpp).
 std::string glyphs_json(const std::vector<GlyphBitmap>& glyphs, const GlyphRenderOptions& options);
 // All glyphs side by side, left to right, one empty column apart, top rows aligned on a common
-// baseline; coverage as is (0 black = empty, 255 white = covered). LCD modes give an RGB image.
-// An error when every glyph is empty (no image of 0 × 0 exists).
-Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs);
-// The same picture as binary PGM (P5), or PPM (P6) for LCD modes.
-Expected<std::string> glyphs_pnm(const std::vector<GlyphBitmap>& glyphs);
+// baseline, painted in `colours` (picture.hpp: ink on paper), or without colours the coverage as
+// is (0 = empty, 255 = covered). Gray coverage in gray colours gives a gray PNG; LCD modes or
+// other colours an RGB one (RGBA for translucent colours). An error when every glyph is empty
+// (no image of 0 × 0 exists).
+Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs,
+                                 const std::optional<PictureColours>& colours);
+// The same picture as binary PGM (P5) when gray, else PPM (P6).
+Expected<std::string> glyphs_pnm(const std::vector<GlyphBitmap>& glyphs,
+                                 const std::optional<PictureColours>& colours);
 
 }  // namespace bezel::cli

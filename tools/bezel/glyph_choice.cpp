@@ -2,7 +2,6 @@
 #include "glyph_choice.hpp"
 
 #include <CLI/CLI.hpp>
-#include <iostream>
 
 #include "cli_common.hpp"
 #include "parse_check.hpp"
@@ -76,19 +75,25 @@ Expected<std::vector<GlyphRequest>> requested_glyphs(const GlyphChoice& choice, 
         if (!cps) return Error{"--text: " + cps.error().message};  // checked when settled
         for (char32_t cp : *cps) {
             auto gid = font.glyph_for_char(cp);
-            if (!gid)
-                std::cerr << "bezel: warning: " << font.file() << ": no glyph for "
-                          << format_code_point(cp) << ", using .notdef\n";
-            out.push_back({gid.value_or(0), cp});
+            out.push_back({gid.value_or(0), cp, !gid});
         }
         return out;
     }
     auto cp = parse_code_point(choice.chr);
     if (!cp) return Error{"--char: " + cp.error().message};  // checked at parsing already
     auto gid = font.glyph_for_char(*cp);
-    if (!gid) return Error{font.file() + ": no glyph for " + format_code_point(*cp)};
-    out.push_back({*gid, *cp});
+    out.push_back({gid.value_or(0), *cp, !gid});
     return out;
+}
+
+MissingGlyphs missing_of(const std::vector<GlyphRequest>& requests) {
+    MissingGlyphs missing;
+    for (const GlyphRequest& r : requests) {
+        if (!r.missing) continue;
+        if (missing.count == 0) missing.first_code_point = r.code_point.value_or(0);
+        ++missing.count;
+    }
+    return missing;
 }
 
 }  // namespace bezel::cli

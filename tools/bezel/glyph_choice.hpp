@@ -10,6 +10,7 @@
 #include "bezel/expected.hpp"
 #include "bezel/font.hpp"
 #include "font_args.hpp"
+#include "bezel/layout.hpp"
 
 namespace CLI {
 class App;
@@ -22,6 +23,7 @@ namespace bezel::cli {
 struct GlyphRequest {
     GlyphId gid = 0;
     std::optional<char32_t> code_point;
+    bool missing = false;   // the font maps code_point to nothing: gid is .notdef (0)
 };
 
 struct GlyphChoice {
@@ -45,10 +47,13 @@ void add_glyph_choice(CLI::App& cmd, GlyphChoice& choice, const std::string& tex
 int settle_glyph_choice(GlyphChoice& choice, FontArgs& font, const CLI::App& cmd,
                         const std::string& command);
 
-// Resolves a settled choice against `font`. A --gid past the font's glyphs and a --char the font
-// does not map are errors naming the font (well-formed values this font lacks: runtime errors);
-// characters of a text the font does not map become .notdef (gid 0) with a warning on stderr, as
-// hb-view draws them.
+// Resolves a settled choice against `font`. A --gid past the font's glyphs is an error naming the
+// font (a well-formed value this font lacks: a runtime error); characters of --char, --text or
+// TEXT the font does not map become .notdef (gid 0) marked `missing`, for report_missing_glyphs
+// (missing_glyphs.hpp), as hb-view draws them.
 Expected<std::vector<GlyphRequest>> requested_glyphs(const GlyphChoice& choice, const Font& font);
+
+// The requests marked `missing`, counted, and the first of them.
+MissingGlyphs missing_of(const std::vector<GlyphRequest>& requests);
 
 }  // namespace bezel::cli

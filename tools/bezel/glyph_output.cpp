@@ -76,12 +76,15 @@ Expected<std::vector<std::uint8_t>> compose(const std::vector<GlyphBitmap>& glyp
     return px;
 }
 
-Image rgb_image(const std::vector<std::uint8_t>& px, int w, int h) {
+// LCD coverage as an image, each subpixel's coverage in its channel; painted when `colours`.
+Image rgb_image(const std::vector<std::uint8_t>& px, int w, int h,
+                const std::optional<PictureColours>& colours) {
     Image img(w, h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const std::uint8_t* p = px.data() + (static_cast<std::size_t>(y) * w + x) * 3;
-            img.at(x, y) = Rgba8{p[0], p[1], p[2], 255};
+            img.at(x, y) = colours ? paint_rgb(*colours, p[0] / 255.0, p[1] / 255.0, p[2] / 255.0)
+                                   : Rgba8{p[0], p[1], p[2], 255};
         }
     return img;
 }
@@ -164,26 +167,39 @@ std::string glyphs_json(const std::vector<GlyphBitmap>& glyphs, const GlyphRende
     return arr.dump(2) + "\n";
 }
 
-Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs) {
+Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs,
+                                 const std::optional<PictureColours>& colours) {
     Layout l;
     const int bpp = picture_bpp(glyphs);
     auto px = compose(glyphs, l, bpp);
     if (!px) return px.error();
-    auto png = bpp == 1 ? encode_png_gray(ConstMaskView{px->data(), l.width, l.height, l.width})
-                        : encode_png(rgb_image(*px, l.width, l.height), PngColor::Rgb);
-    if (!png) return png.error();
-    return std::string(png->begin(), png->end());
+    const ConstMaskView gray{px->data(), l.width, l.height, l.width};
+    if (!colours) {
+        auto png = bpp == 1 ? encode_png_gray(gray)
+                            : encode_png(rgb_image(*px, l.width, l.height, colours), PngColor::Rgb);
+        if (!png) return png.error();
+        return std::string(png->begin(), png->end());
+    }
+    const Image picture = bpp == 1 ? paint_coverage(gray, *colours)
+                                   : rgb_image(*px, l.width, l.height, colours);
+    return picture_png(picture, bpp == 1 && colours->gray(), colours->translucent());
 }
 
-Expected<std::string> glyphs_pnm(const std::vector<GlyphBitmap>& glyphs) {
+Expected<std::string> glyphs_pnm(const std::vector<GlyphBitmap>& glyphs,
+                                 const std::optional<PictureColours>& colours) {
     Layout l;
     const int bpp = picture_bpp(glyphs);
     auto px = compose(glyphs, l, bpp);
     if (!px) return px.error();
-    const std::vector<std::uint8_t> bytes =
-        bpp == 1 ? encode_pgm(ConstMaskView{px->data(), l.width, l.height, l.width})
-                 : encode_ppm(rgb_image(*px, l.width, l.height));
-    return std::string(bytes.begin(), bytes.end());
+    const ConstMaskView gray{px->data(), l.width, l.height, l.width};
+    if (!colours) {
+        const std::vector<std::uint8_t> bytes =
+            bpp == 1 ? encode_pgm(gray) : encode_ppm(rgb_image(*px, l.width, l.height, colours));
+        return std::string(bytes.begin(), bytes.end());
+    }
+    const Image picture = bpp == 1 ? paint_coverage(gray, *colours)
+                                   : rgb_image(*px, l.width, l.height, colours);
+    return picture_pnm(picture, bpp == 1 && colours->gray());
 }
 
 }  // namespace bezel::cli

@@ -6,6 +6,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "font_args.hpp"
+#include "parse_check.hpp"
 #include "info.hpp"
 
 namespace bezel::cli {
@@ -84,7 +85,7 @@ Command add_info_command(CLI::App& app) {
     cmd->add_option("TEXT", args->coverage, "Text whose coverage to report, as --coverage");
     cmd->add_option("--face-index", args->face_index, "Face to describe in a font collection")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(non_negative_number());
     cmd->add_option("--coverage", args->coverage,
                     "Report which characters of this text (UTF-8) the font maps, instead of the "
                     "description")

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "cli_common.hpp"
 #include "info.hpp"
 
 namespace bezel::cli {
@@ -23,12 +24,6 @@ namespace bezel::cli {
 namespace {
 
 using nlohmann::ordered_json;
-
-std::string plain_number(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
 
 std::string coordinates_text(const NamedInstance& instance) {
     std::string s;

@@ -5,6 +5,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "picture.hpp"
 #include "intersect_output.hpp"
 
 namespace bezel::cli {
@@ -14,6 +15,7 @@ struct IntersectArgs {
     std::string path_a, path_b;  // SVG path data
     std::string format;          // -O
     std::string output_file;     // -o
+    std::string foreground, background;   // png: ink and paper ("": black on white)
     CLI::Option* b_option = nullptr;
 };
 
@@ -57,7 +59,9 @@ int run_intersect(const IntersectArgs& args) {
         case IntersectFormat::Json: document = format_intersect_json(report); break;
         case IntersectFormat::Svg: document = format_intersect_svg(report); break;
         case IntersectFormat::Png: {
-            auto png = format_intersect_png(report);
+            auto colours = picture_colours(args.foreground, args.background);
+            if (!colours) return fail_usage(colours.error().message, command);
+            auto png = format_intersect_png(report, *colours);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);
             break;
@@ -88,6 +92,7 @@ Command add_intersect_command(CLI::App& app) {
     cmd->add_option("-o,--output-file", args->output_file,
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
+    add_colour_options(*cmd, args->foreground, args->background);
     return Command{cmd, [args] { return run_intersect(*args); }};
 }
 

@@ -9,6 +9,7 @@
 #include "bezel/expected.hpp"
 #include "bezel/intersect.hpp"
 #include "bezel/path.hpp"
+#include "picture.hpp"
 
 namespace bezel::cli {
 
@@ -29,9 +30,10 @@ std::string format_intersect_json(const IntersectReport& r);
 // Both paths stroked (A blue, B red), overlaps as wide translucent bands, points as rings
 // (black: cross, orange: tangent, green: endpoint).
 std::string format_intersect_svg(const IntersectReport& r);
-// The same picture as an 8-bit gray PNG, kIntersectPngSizePx on its longer side, black on
-// white (A black, B mid-gray, points as rings). Returns the file's bytes.
+// The same picture as a PNG, kIntersectPngSizePx on its longer side, in shades of the ink on the
+// paper (picture.hpp; black on white, an 8-bit gray PNG, by default): A full ink, B mid, points
+// as rings. Returns the file's bytes.
 inline constexpr int kIntersectPngSizePx = 512;
-Expected<std::string> format_intersect_png(const IntersectReport& r);
+Expected<std::string> format_intersect_png(const IntersectReport& r, const PictureColours& colours);
 
 }  // namespace bezel::cli

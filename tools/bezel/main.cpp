@@ -7,19 +7,58 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "suggest.hpp"
 
 namespace {
 
-// The deepest subcommand the parser entered, for "Run 'bezel outline --help'" hints.
-std::string command_path(const CLI::App& app) {
-    std::string path = "bezel";
+// The deepest subcommand the parser entered.
+const CLI::App* deepest_command(const CLI::App& app) {
     const CLI::App* at = &app;
     for (;;) {
         auto subs = at->get_subcommands();
-        if (subs.empty()) return path;
+        if (subs.empty()) return at;
         at = subs.front();
+    }
+}
+
+// "bezel outline", for "Run 'bezel outline --help'" hints.
+std::string command_path(const CLI::App& app) {
+    std::string path = "bezel";
+    for (const CLI::App* at = &app; at->get_subcommands().size() > 0;) {
+        at = at->get_subcommands().front();
         path += " " + at->get_name();
     }
+    return path;
+}
+
+// Every option name `command` takes, "--font-size" and "-o" alike, including those of its option
+// groups (CLI11 keeps a group as an unnamed subcommand).
+void option_names(const CLI::App& command, std::vector<std::string>& names) {
+    for (const CLI::Option* option : command.get_options()) {
+        for (const std::string& l : option->get_lnames()) names.push_back("--" + l);
+        for (const std::string& s : option->get_snames()) names.push_back("-" + s);
+    }
+    for (const CLI::App* sub : command.get_subcommands([](const CLI::App* a) {
+             return a->get_name().empty();
+         }))
+        option_names(*sub, names);
+}
+
+// An unknown option on the command line, as bezel says it, with the option meant when one is
+// close: "unknown option --font-sise; did you mean --font-size?". Empty when every word was
+// taken. CLI11 reports an unknown option as "The following argument was not expected", or, when
+// a required option is missing too, only that ("--char" misspelled leaves the group without
+// one); either way the unknown one is what the user needs to hear about first.
+std::string unknown_option_message(const CLI::App& app) {
+    const CLI::App* command = deepest_command(app);
+    const std::vector<std::string> extras = command->remaining();
+    if (extras.empty() || extras.front().size() < 2 || extras.front()[0] != '-') return {};
+    const std::string typed = extras.front().substr(0, extras.front().find('='));
+    std::vector<std::string> names;
+    option_names(*command, names);
+    std::string message = "unknown option " + typed;
+    if (auto meant = bezel::cli::closest_name(typed, names)) message += "; did you mean " + *meant + "?";
+    return message;
 }
 
 }  // namespace
@@ -50,17 +89,22 @@ int run_cli(int argc, char** argv) {
     for (std::size_t i = 0; i < commands.size(); ++i)
         commands[i].app->add_option("bezel-stray-arguments", strays[i])->group("");
 
-    // CLI11 would report a mistyped command only as "A subcommand is required"; name it instead.
+    // CLI11 would report a mistyped command only as "A subcommand is required"; name it instead,
+    // with the command meant when one is close ("rendr: not a bezel command; did you mean render?").
     if (argc > 1 && argv[1][0] != '-') {
         std::string names;
+        std::vector<std::string> name_list;
         bool known = false;
         for (const Command& command : commands) {
             known |= command.app->get_name() == argv[1];
             names += (names.empty() ? "" : ", ") + command.app->get_name();
+            name_list.push_back(command.app->get_name());
         }
-        if (!known)
-            return fail_usage(std::string(argv[1]) + ": not a bezel command (commands: " + names + ")",
-                              "bezel");
+        if (!known) {
+            std::string message = std::string(argv[1]) + ": not a bezel command";
+            if (auto meant = closest_name(argv[1], name_list)) message += "; did you mean " + *meant + "?";
+            return fail_usage(message + " (commands: " + names + ")", "bezel");
+        }
     }
 
     try {
@@ -72,6 +116,8 @@ int run_cli(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
+        if (std::string unknown = unknown_option_message(app); !unknown.empty())
+            return fail_usage(unknown, command_path(app));
         return fail_usage(e.what(), command_path(app));
     }
 

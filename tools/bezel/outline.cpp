@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "font_args.hpp"
 #include "glyph_choice.hpp"
+#include "missing_glyphs.hpp"
 #include "outline_model.hpp"
 
 namespace bezel::cli {
@@ -19,6 +20,7 @@ struct OutlineArgs {
     std::string format;          // -O
     std::string output_file;     // -o
     CLI::App* cmd = nullptr;
+    bool strict = false;         // --strict
 };
 
 int run_outline(OutlineArgs& args) {
@@ -31,6 +33,8 @@ int run_outline(OutlineArgs& args) {
     if (!font) return fail_runtime(font.error().message);
     auto glyphs = requested_glyphs(args.which, *font);
     if (!glyphs) return fail_runtime(glyphs.error().message);
+    if (Status s = report_missing_glyphs(font->file(), missing_of(*glyphs), args.strict); !s)
+        return fail_runtime(s.error().message);
 
     OutlineReport report;
     report.font_file = font->file();
@@ -95,6 +99,7 @@ Command add_outline_command(CLI::App& app) {
     cmd->add_option("-o,--output-file", args->output_file,
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
+    add_strict_option(*cmd, args->strict);
 
     return Command{cmd, [args] { return run_outline(*args); }};
 }

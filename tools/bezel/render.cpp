@@ -15,7 +15,9 @@
 #include "bezel/text.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "parse_check.hpp"
 #include "font_args.hpp"
+#include "missing_glyphs.hpp"
 #include "render_output.hpp"
 #include "sample_text.hpp"
 
@@ -55,6 +57,7 @@ struct RenderArgs {
     double stroke_px = 0;       // --stroke: outlined text this wide; 0 = filled glyphs
     std::string format;         // -O
     std::string output_file;    // -o
+    bool strict = false;        // --strict
     CLI::App* cmd = nullptr;
 };
 
@@ -93,18 +96,22 @@ Expected<std::string> read_text_file(const std::string& file) {
 // keep their shape at any width) instead of filled. The stroke's pieces overlap by design, so they
 // are filled with the accurate overlap mode; each glyph is stroked, rasterized into its own box
 // and blended at its pen, bypassing the glyph cache (a stroked glyph is not a cached bitmap;
-// one CLI call can afford stroking every placed glyph).
+// one CLI call can afford stroking every placed glyph). `missing` receives the layout's .notdef
+// glyphs, as TextRenderer::missing_glyphs does for filled text.
 Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
-                                const TextRenderOptions& options, double stroke_px) {
+                                const TextRenderOptions& options, double stroke_px,
+                                MissingGlyphs& missing) {
     Font& font = renderer.font();
     if (auto set = font.set_variations(options.shape.variations); !set) return set.error();
     auto layout = layout_text(renderer.shaper(), font.metrics(), text, options.shape,
                               options.layout);
     if (!layout) return layout.error();
+    missing = find_missing_glyphs(*layout, text);
     const double w = std::ceil(layout->width_px), h = std::ceil(layout->height_px);
     if (!(w <= kMaxImageDim && h <= kMaxImageDim && w * h <= kMaxOutlinedPagePixels))
-        return Error{"text page of " + std::to_string(static_cast<long>(w)) + "x" +
-                     std::to_string(static_cast<long>(h)) + " px is too large"};
+        return Error{"outlined text page of " + plain_number(w) + "x" + plain_number(h) +
+                     " px is too large (at most " + std::to_string(kMaxImageDim) + " px a side, " +
+                     plain_number(kMaxOutlinedPagePixels) + " px in all)"};
     Image page(std::max(1, static_cast<int>(w)), std::max(1, static_cast<int>(h)),
                options.background);
 
@@ -225,19 +232,25 @@ int run_render(RenderArgs& args) {
     const bool alpha = fg->a != 255 || bg->a != 255;
     const std::string destination = args.output_file.empty() ? "<stdout>" : args.output_file;
     Expected<std::string> bytes = std::string();
+    MissingGlyphs outlined_missing;
     if (gray && !alpha && args.stroke_px == 0 &&
         (*format == PageFormat::Png || *format == PageFormat::Pgm)) {
         // Gray text to a gray file: the page is one byte per pixel from the start (the same
         // bytes the RGBA page would give after conversion, a quarter of the memory).
         bytes = render_gray_page(*renderer, text, options, *format, destination);
     } else {
-        auto page = args.stroke_px > 0 ? render_outlined(*renderer, text, options, args.stroke_px)
-                                       : renderer->render(text, options);
+        auto page = args.stroke_px > 0
+                        ? render_outlined(*renderer, text, options, args.stroke_px, outlined_missing)
+                        : renderer->render(text, options);
         if (!page) return fail_runtime(page.error().message);
         bytes = encode_page(*page, *format, gray && !alpha, alpha, columns);
         if (!bytes) return fail_runtime(destination + ": " + bytes.error().message);
     }
     if (!bytes) return fail_runtime(bytes.error().message);
+    const MissingGlyphs& missing =
+        args.stroke_px > 0 ? outlined_missing : renderer->missing_glyphs();
+    if (Status s = report_missing_glyphs(renderer->font().file(), missing, args.strict); !s)
+        return fail_runtime(s.error().message);
     return write_result(args.output_file, *bytes);
 }
 
@@ -252,8 +265,10 @@ Command add_render_command(CLI::App& app) {
     cmd->footer(
         "With no TEXT, a sample paragraph. With no -o, PNG to stdout, or an ANSI preview when\n"
         "stdout is a terminal (then --font-size defaults to 10, --margin to 1 and lines wrap at\n"
-        "the terminal's width). Colours: #RRGGBB, #RRGGBBAA, #RGB, #RGBA or black, white, red,\n"
-        "green, blue, transparent. PNG is gray for gray-on-gray, RGBA for translucent colours.\n"
+        "the terminal's width). Colours: #RRGGBB, #RRGGBBAA, #RGB, #RGBA, a CSS colour name\n"
+        "(yellow, rebeccapurple, ...) or transparent. PNG is gray for gray-on-gray, RGBA for\n"
+        "translucent colours. Characters the font lacks are drawn as its .notdef box, with a\n"
+        "warning (an error with --strict).\n"
         "Examples:\n"
         "  bezel render -o hello.png\n"
         "  bezel render DejaVuSans.ttf 'Wafer office' --font-size 48 --features=-liga -o w.png\n"
@@ -267,27 +282,31 @@ Command add_render_command(CLI::App& app) {
         ->type_name("FILE");
     cmd->add_option("--features", args->features,
                     "OpenType features, hb-view syntax: \"kern,-liga,+smcp,aalt=2\"")
-        ->type_name("LIST");
+        ->type_name("LIST")
+        ->check(parse_check([](const std::string& v) { return parse_features(v); }, "features"));
     cmd->add_option("--direction", args->direction,
                     "The paragraph's base direction: ltr, rtl or auto (default: from its first "
                     "strong character); runs of the other direction inside it are still ordered "
                     "by bidi, where hb-view's --direction shapes all of the text one way")
         ->type_name("DIR");
     cmd->add_option("--script", args->script, "ISO 15924 script tag, e.g. Arab (default: from the text)")
-        ->type_name("TAG");
-    cmd->add_option("--language", args->language, "BCP 47 language tag, e.g. ar")->type_name("TAG");
+        ->type_name("TAG")
+        ->check(parse_check(check_script_tag, "script"));
+    cmd->add_option("--language", args->language, "BCP 47 language tag, e.g. ar")
+        ->type_name("TAG")
+        ->check(parse_check(check_language_tag, "language"));
     cmd->add_option("--width", args->width_px,
                     "Wrap lines to this width in pixels (default: no wrapping, only the text's "
                     "newlines)")
         ->type_name("PX")
-        ->check(CLI::Range(0.0, static_cast<double>(kMaxImageDim)));
+        ->check(in_range(0.0, static_cast<double>(kMaxImageDim)));
     cmd->add_option("--margin", args->margin_px, "Margin on all four sides, pixels (default 16)")
         ->type_name("PX")
-        ->check(CLI::Range(0.0, static_cast<double>(kMaxImageDim)));
+        ->check(in_range(0.0, static_cast<double>(kMaxImageDim)));
     cmd->add_option("--line-height", args->line_height,
                     "Baseline distance as a multiple of the font's line height (default 1)")
         ->type_name("X")
-        ->check(CLI::Range(0.0, 100.0));
+        ->check(in_range(0.0, 100.0));
     cmd->add_option("--align", args->align, "start, center or end (default start)")
         ->type_name("ALIGN")
         ->check(CLI::IsMember({"start", "center", "end"}));
@@ -302,13 +321,14 @@ Command add_render_command(CLI::App& app) {
                     "Outlined text: stroke each glyph's outline this many pixels wide (round "
                     "joins) instead of filling it")
         ->type_name("PX")
-        ->check(CLI::Range(0.0, kMaxStrokePx));
+        ->check(in_range(0.0, kMaxStrokePx));
     cmd->add_option("-O,--output-format", args->format,
                     "png, pgm, ppm or ansi; default: from the -o file's extension")
         ->type_name("FORMAT");
     cmd->add_option("-o,--output-file", args->output_file,
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
+    add_strict_option(*cmd, args->strict);
     return Command{cmd, [args] { return run_render(*args); }};
 }
 

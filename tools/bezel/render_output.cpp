@@ -8,6 +8,8 @@
 #include <optional>
 #include <thread>
 
+#include "cli_common.hpp"
+
 namespace bezel::cli {
 
 namespace {

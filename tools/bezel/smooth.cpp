@@ -8,6 +8,8 @@
 #include "bezel/smooth.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "picture.hpp"
+#include "parse_check.hpp"
 #include "smooth_output.hpp"
 
 namespace bezel::cli {
@@ -29,6 +31,7 @@ struct SmoothArgs {
     bool free_ends = false;         // --free-ends (bspline)
     std::string format;             // -O
     std::string output_file;        // -o
+    std::string foreground, background;   // png: ink and paper ("": black on white)
     CLI::App* cmd = nullptr;
 };
 
@@ -128,7 +131,9 @@ int run_smooth(const SmoothArgs& args) {
         case SmoothFormat::Path: document = format_smooth_path(report); break;
         case SmoothFormat::Svg: document = format_smooth_svg(report); break;
         case SmoothFormat::Png: {
-            auto png = format_smooth_png(report);
+            auto colours = picture_colours(args.foreground, args.background);
+            if (!colours) return fail_usage(colours.error().message, kSmoothCommand);
+            auto png = format_smooth_png(report, *colours);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);
             break;
@@ -169,18 +174,18 @@ Command add_smooth_command(CLI::App& app) {
                   "A closed curve (a last point equal to the first is dropped)");
     cmd->add_option("--iterations", args->iterations, "chaikin: rounds of corner cutting (default 4)")
         ->type_name("N")
-        ->check(CLI::Range(0, kMaxChaikinIterations));
+        ->check(in_range(0, kMaxChaikinIterations));
     cmd->add_flag("--limit", args->limit,
                   "chaikin: the limit curve (uniform quadratic B-spline) instead of the polygon");
     cmd->add_option("--alpha", args->alpha,
                     "catmull-rom: knot exponent, 0 uniform, 0.5 centripetal (default), 1 chordal")
         ->type_name("A")
-        ->check(CLI::Range(0.0, 1.0));
+        ->check(in_range(0.0, 1.0));
     cmd->add_option("--tension", args->tension,
                     "catmull-rom, hermite without --tangents: tangent scale τ (default 0.5, the "
                     "standard Catmull-Rom; 0 gives straight pieces)")
         ->type_name("T")
-        ->check(CLI::Range(0.0, 1e6));
+        ->check(in_range(0.0, 1e6));
     cmd->add_option("--tangents", args->tangents,
                     "hermite: one derivative dx,dy per point (default: cardinal, from --tension)")
         ->type_name("LIST");
@@ -196,6 +201,7 @@ Command add_smooth_command(CLI::App& app) {
     cmd->add_option("-o,--output-file", args->output_file,
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
+    add_colour_options(*cmd, args->foreground, args->background);
     return Command{cmd, [args] { return run_smooth(*args); }};
 }
 

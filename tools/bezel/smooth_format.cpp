@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli_common.hpp"
 #include "smooth_output.hpp"
 
 namespace bezel::cli {
@@ -12,16 +13,6 @@ namespace {
 using nlohmann::json;
 
 json pair(Point p) { return json::array({p.x, p.y}); }
-
-// The shortest %g form that reads back to the same double (at most 17 digits).
-std::string g17(double v) {
-    char buf[40];
-    for (int precision = 1; precision <= 17; ++precision) {
-        std::snprintf(buf, sizeof buf, "%.*g", precision, v);
-        if (std::strtod(buf, nullptr) == v) break;
-    }
-    return buf;
-}
 
 }  // namespace
 
@@ -56,13 +47,13 @@ std::string format_smooth_path(const SmoothReport& r) {
 std::string format_continuity_text(const std::vector<JointReport>& joints, double tolerance) {
     std::ostringstream s;
     s << joints.size() << (joints.size() == 1 ? " joint" : " joints") << ", tolerance "
-      << g17(tolerance) << " (relative)\n";
+      << plain_number(tolerance) << " (relative)\n";
     for (std::size_t i = 0; i < joints.size(); ++i) {
         const JointReport& j = joints[i];
         s << "joint " << i << ": segment " << j.incoming << " -> " << j.outgoing << " (contour "
-          << j.contour << ") at " << g17(j.point.x) << "," << g17(j.point.y) << ": "
-          << continuity_name(j.continuity) << "  [angle " << g17(j.angle_rad) << " rad, d1 "
-          << g17(j.d1_error) << ", d2 " << g17(j.d2_error) << "]\n";
+          << j.contour << ") at " << plain_number(j.point.x) << "," << plain_number(j.point.y) << ": "
+          << continuity_name(j.continuity) << "  [angle " << plain_number(j.angle_rad) << " rad, d1 "
+          << plain_number(j.d1_error) << ", d2 " << plain_number(j.d2_error) << "]\n";
     }
     return s.str();
 }

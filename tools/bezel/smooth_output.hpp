@@ -13,6 +13,7 @@
 #include "bezel/expected.hpp"
 #include "bezel/path.hpp"
 #include "bezel/smooth.hpp"
+#include "picture.hpp"
 
 namespace bezel::cli {
 
@@ -56,11 +57,11 @@ std::string format_smooth_path(const SmoothReport& r);
 // The input points (red dots, numbered), the input polygon (gray, dashed), each cubic piece's
 // Bézier handles (purple) and the result (blue).
 std::string format_smooth_svg(const SmoothReport& r);
-// The same picture as an 8-bit gray PNG, kSmoothPngSizePx on its longer side, drawn by bezel's
-// rasterizer: result black, input polygon mid-gray, handles light gray, points dark dots.
-// Returns the file's bytes.
+// The same picture as a PNG, kSmoothPngSizePx on its longer side, drawn by bezel's rasterizer in
+// shades of the ink on the paper (picture.hpp; black on white, an 8-bit gray PNG, by default):
+// result full ink, input polygon mid, handles light, points dark dots. Returns the file's bytes.
 inline constexpr int kSmoothPngSizePx = 512;
-Expected<std::string> format_smooth_png(const SmoothReport& r);
+Expected<std::string> format_smooth_png(const SmoothReport& r, const PictureColours& colours);
 
 // `bezel continuity`: one line per joint, or the JSON
 //   {"tolerance": t, "joints": [{"contour": c, "incoming": i, "outgoing": j, "point": [x, y],

@@ -12,6 +12,7 @@
 #include "bezel/stroke.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "picture.hpp"
 #include "draw.hpp"
 #include "stroke_output.hpp"
 
@@ -33,6 +34,7 @@ struct StrokeArgs {
     std::string transform;    // --transform a,b,c,d,e,f (png)
     std::string format;       // -O
     std::string output_file;  // -o
+    std::string foreground, background;   // png: ink and paper ("": black on white)
     CLI::App* cmd = nullptr;
 };
 
@@ -166,7 +168,9 @@ int run_stroke(const StrokeArgs& args) {
         case StrokeFormat::Path: document = to_svg_path(*outline) + "\n"; break;
         case StrokeFormat::Svg: document = format_stroke_svg(*path, *outline, *style); break;
         case StrokeFormat::Png: {
-            auto png = format_stroke_png(*outline, *frame);
+            auto colours = picture_colours(args.foreground, args.background);
+            if (!colours) return fail_usage(colours.error().message, kStrokeCommand);
+            auto png = format_stroke_png(*outline, *frame, *colours);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);
             break;
@@ -232,6 +236,7 @@ Command add_stroke_command(CLI::App& app) {
     cmd->add_option("-o,--output-file", args->output_file,
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
+    add_colour_options(*cmd, args->foreground, args->background);
     return Command{cmd, [args] { return run_stroke(*args); }};
 }
 

@@ -51,7 +51,8 @@ std::string format_stroke_svg(const Path& source, const Path& outline, const Str
     return s.str();
 }
 
-Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& frame) {
+Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& frame,
+                                        const PictureColours& colours) {
     Path mapped = outline.transformed(frame.transform);
     if (!mapped.is_finite()) return Error{"--transform: the mapped outline is not finite"};
     Affine to_canvas;
@@ -74,11 +75,7 @@ Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& fra
     auto st = raster.fill_path(mapped, to_canvas, mask.view(),
                                {FillRule::NonZero, OverlapMode::Accurate});
     if (!st) return st.error();
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) mask.at(x, y) = static_cast<std::uint8_t>(255 - mask.at(x, y));
-    auto bytes = encode_png_gray(mask.view());
-    if (!bytes) return bytes.error();
-    return std::string(bytes->begin(), bytes->end());
+    return picture_png(paint_coverage(mask.view(), colours), colours.gray(), colours.translucent());
 }
 
 }  // namespace bezel::cli

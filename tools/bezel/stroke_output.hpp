@@ -8,6 +8,7 @@
 #include "bezel/geometry.hpp"
 #include "bezel/path.hpp"
 #include "bezel/stroke.hpp"
+#include "picture.hpp"
 
 namespace bezel::cli {
 
@@ -25,8 +26,10 @@ struct PngFrame {
 // A standalone SVG: white paper, the outline filled (nonzero), the source path as a hairline.
 std::string format_stroke_svg(const Path& source, const Path& outline, const StrokeStyle& style);
 
-// Black ink on white, 8-bit gray PNG bytes; the outline filled NonZero with overlaps resolved
-// exactly (OverlapMode::Accurate: the outline's pieces overlap by design).
-Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& frame);
+// The outline filled NonZero with overlaps resolved exactly (OverlapMode::Accurate: the
+// outline's pieces overlap by design), painted in `colours` (picture.hpp: black on white by
+// default, then an 8-bit gray PNG), as PNG bytes.
+Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& frame,
+                                        const PictureColours& colours);
 
 }  // namespace bezel::cli

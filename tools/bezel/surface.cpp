@@ -9,6 +9,7 @@
 #include "bezel/surface.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "parse_check.hpp"
 #include "surface_input.hpp"
 
 namespace bezel::cli {
@@ -216,19 +217,19 @@ Command add_surface_command(CLI::App& app) {
         ->type_name("WxH");
     auto* steps = cmd->add_option("--steps", args->steps, "Grid steps per patch side")
                       ->type_name("N")
-                      ->check(CLI::Range(1, kMaxTessellationSteps));
+                      ->check(in_range(1, kMaxTessellationSteps));
     auto* tol = cmd->add_option("--tolerance", args->tolerance,
                                 "Mesh error bound in world units (default: ~0.5 px in pictures, "
                                 "1/1000 of the size for meshes)")
                     ->type_name("T")
-                    ->check(CLI::Range(1e-12, 1e12));
+                    ->check(in_range(1e-12, 1e12));
     steps->excludes(tol);
     cmd->add_option("--iso-lines", args->iso_lines, "wire: iso-curves per patch and direction (2-64, default 5)")
         ->type_name("N")
-        ->check(CLI::Range(2, 64));
+        ->check(in_range(2, 64));
     cmd->add_option("--line-width", args->line_width, "wire: line width in pixels (default 1)")
         ->type_name("PX")
-        ->check(CLI::Range(0.01, 64.0));
+        ->check(in_range(0.01, 64.0));
     cmd->add_option("--background", args->background, "Background colour (default white)")
         ->type_name("COLOR");
     cmd->add_option("--foreground", args->foreground, "Surface or line colour")->type_name("COLOR");

@@ -128,7 +128,14 @@ public:
     std::size_t glyph_count() const;
     bool is_scalable() const;
     bool has_cubic_outlines() const;  // CFF/CFF2 rather than TrueType glyf
+    bool has_color_bitmaps() const;   // CBDT, sbix or other colour glyph images
+    // ok when the face has outlines, which is all bezel draws; for a bitmap-only face (colour
+    // emoji, EBDT, BDF) an Error naming the file: "NotoColorEmoji.ttf: a bitmap-only font (no
+    // outlines); colour bitmap fonts are not supported yet". Every outline call fails with it.
+    Status require_outlines() const;
 
+    // For a bitmap-only sfnt, units per em, ascender, descender and line gap come from its head
+    // and hhea tables (FreeType reports them as 0 for faces without outlines).
     FontMetrics metrics() const;
 
     // Glyph for a Unicode code point; std::nullopt when the font maps it to nothing (.notdef).

@@ -118,8 +118,8 @@ struct Rgba8 {
 };
 
 // Parses a colour as hb-view does: "#RRGGBB", "#RRGGBBAA", "RRGGBB", "RRGGBBAA", "#RGB", "#RGBA"
-// (hex, case-insensitive), plus a few CSS names ("black", "white", "red", "green", "blue",
-// "transparent"). The error names the text.
+// (hex, case-insensitive), plus the 148 CSS named colours ("yellow", "rebeccapurple"; CSS's
+// values, so "green" is #008000) and "transparent", case-insensitive. The error names the text.
 Expected<Rgba8> parse_color(std::string_view text);
 
 // An owning RGBA8 image, rows packed. A value type.

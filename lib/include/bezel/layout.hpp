@@ -72,4 +72,14 @@ Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
                                  std::string_view utf8, const ShapeOptions& shape,
                                  const LayoutOptions& layout);
 
+// The glyphs of a layout that are .notdef (gid 0): characters the font maps to nothing, drawn as
+// its "missing glyph" box, as hb-view draws them.
+struct MissingGlyphs {
+    std::size_t count = 0;             // .notdef glyphs placed
+    std::uint32_t first_cluster = 0;   // byte offset of the first of them in text order
+    char32_t first_code_point = 0;     // the character there (valid when count > 0)
+};
+// `layout` must be layout_text's result for `utf8`.
+MissingGlyphs find_missing_glyphs(const TextLayout& layout, std::string_view utf8);
+
 }  // namespace bezel

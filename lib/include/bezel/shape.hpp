@@ -39,6 +39,13 @@ struct FeatureSetting {
 // the item that does not parse.
 Expected<std::vector<FeatureSetting>> parse_features(std::string_view spec);
 
+// ShapeOptions::script and ::language checked as Shaper::shape reads them, so that a front end
+// can refuse a bad value before any work. A script is an ISO 15924 tag of a script HarfBuzz
+// knows ("Arab", "latn"; "Ar" is malformed, "Xyzw" unknown); a language is a BCP 47 tag, loosely
+// (subtags of 1-8 letters or digits joined by '-': "ar", "sr-Latn"). Errors name the tag.
+Status check_script_tag(const std::string& tag);
+Status check_language_tag(const std::string& tag);
+
 struct ShapeOptions {
     double size_px = 16;                       // em size, (0, kMaxFontSizePx]
     std::vector<FeatureSetting> features;

@@ -48,7 +48,7 @@ public:
 // Font + Shaper + GlyphRasterizer + GlyphCache for one font file: the one-call text renderer.
 class TextRenderer {
 public:
-    // Errors name the file.
+    // Errors name the file; a bitmap-only font is one (Font::require_outlines).
     static Expected<TextRenderer> open(const std::string& file, int face_index = 0,
                                        std::size_t cache_bytes = kDefaultGlyphCacheBytes);
     TextRenderer(TextRenderer&&) noexcept;
@@ -60,6 +60,9 @@ public:
     Font& font();
     Shaper& shaper();
     GlyphCache& cache();
+    // The .notdef glyphs (characters the font does not map) of the last render, render_gray or
+    // render_gray_streaming call that got as far as laying out the text; all zero before.
+    const MissingGlyphs& missing_glyphs() const;
 
     // Shapes, lays out and draws `utf8` onto a new image sized to the layout (RGBA: background
     // filled, glyphs blended in linear light as image.hpp's blend functions). Errors as

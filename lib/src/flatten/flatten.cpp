@@ -4,6 +4,7 @@
 #include "bezel/flatten.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "flatten/methods.hpp"
@@ -11,6 +12,13 @@
 namespace bezel {
 
 namespace {
+
+// A number in a message: "%g" (6 significant digits), not std::to_string's "%f".
+std::string number_text(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
 
 using flatten_detail::classic_flatness;
 using flatten_detail::distance_subdivision;
@@ -99,7 +107,7 @@ bool walk(const Path& path, const Affine& transform, const Settings& s, Polyline
                 if (error) {
                     *error = "path point " + std::to_string(first + k) +
                              (std::isfinite(p[k].x) && std::isfinite(p[k].y)
-                                  ? " exceeds kMaxFlattenCoordinatePx (2^50) after the transform"
+                                  ? " is beyond 2^50 px from the origin after the transform"
                                   : " is not finite after the transform");
                     return false;
                 }
@@ -138,8 +146,9 @@ bool walk(const Path& path, const Affine& transform, const Settings& s, Polyline
         }
         if (!met && error) {
             *error = "path verb " + std::to_string(vi) + ": tolerance not met within " +
-                     (s.method == FlattenMethod::ClassicFlatness ? "kMaxFlattenDepth halvings"
-                                                                  : "kMaxSegmentsPerCurve segments");
+                     (s.method == FlattenMethod::ClassicFlatness
+                          ? std::to_string(kMaxFlattenDepth) + " halvings"
+                          : std::to_string(kMaxSegmentsPerCurve) + " segments per curve");
             return false;
         }
     }
@@ -162,12 +171,12 @@ Status flatten_checked(const Path& path, const Affine& transform, const FlattenO
     const Settings s{options.method, options.tolerance_px, options.classic_flatness_epsilon};
     if (s.method == FlattenMethod::ClassicFlatness) {
         if (!(s.epsilon > 0.0 && std::isfinite(s.epsilon))) {
-            return Error{"flatten: classic_flatness_epsilon " + std::to_string(s.epsilon) +
+            return Error{"flatten: classic_flatness_epsilon " + number_text(s.epsilon) +
                          " is not a finite positive number"};
         }
     } else if (!(s.tolerance_px >= kMinFlattenTolerancePx && std::isfinite(s.tolerance_px))) {
-        return Error{"flatten: tolerance_px " + std::to_string(s.tolerance_px) +
-                     " is not a finite number ≥ kMinFlattenTolerancePx (1e-9)"};
+        return Error{"flatten: tolerance_px " + number_text(s.tolerance_px) +
+                     " is not a finite number ≥ 1e-9"};
     }
     if (!transform.is_finite()) return Error{"flatten: the transform is not finite"};
 

@@ -18,6 +18,7 @@
 #include "font/outline_convert.hpp"
 
 #include FT_FONT_FORMATS_H
+#include FT_TRUETYPE_TABLES_H
 
 namespace bezel {
 
@@ -133,7 +134,28 @@ FontMetrics Font::metrics() const {
     m.descender = face->descender;
     // FreeType's `height` is the baseline-to-baseline distance, ascender − descender + gap.
     m.line_gap = static_cast<double>(face->height) - (face->ascender - face->descender);
+    // FreeType fills the scalable metrics only for faces with outlines: a bitmap-only sfnt
+    // (colour emoji in CBDT or sbix, EBDT) reports 0 for all of them, though its head and hhea
+    // tables hold the design's values. Read those, so the font's own numbers are reported.
+    if (m.units_per_em == 0) {
+        if (const auto* head = static_cast<const TT_Header*>(FT_Get_Sfnt_Table(face, FT_SFNT_HEAD)))
+            m.units_per_em = head->Units_Per_EM;
+        if (const auto* hhea = static_cast<const TT_HoriHeader*>(FT_Get_Sfnt_Table(face, FT_SFNT_HHEA))) {
+            m.ascender = hhea->Ascender;
+            m.descender = hhea->Descender;
+            m.line_gap = hhea->Line_Gap;
+        }
+    }
     return m;
+}
+
+bool Font::has_color_bitmaps() const { return FT_HAS_COLOR(impl_->face.get()); }
+
+Status Font::require_outlines() const {
+    if (is_scalable() && impl_->face->units_per_EM != 0) return ok_status();
+    return Error{impl_->file + ": a bitmap-only font (no outlines); " +
+                 (has_color_bitmaps() ? "colour bitmap" : "bitmap") +
+                 " fonts are not supported yet"};
 }
 
 std::optional<GlyphId> Font::glyph_for_char(char32_t code_point) const {
@@ -191,9 +213,7 @@ Expected<GlyphOutline> Font::load_glyph(GlyphId gid, const OutlineOptions& optio
                      std::to_string(glyph_count()) + " glyphs)"};
     }
     const std::string glyph_label = file + ": glyph " + std::to_string(gid);
-    if (!FT_IS_SCALABLE(face) || face->units_per_EM == 0) {
-        return Error{glyph_label + ": the font has no outlines (bitmap only)"};
-    }
+    if (Status s = require_outlines(); !s) return s.error();
 
     double scale = 0.0;  // from FreeType's outline units to pixels
     if (options.hinting != Hinting::None) {

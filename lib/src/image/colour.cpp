@@ -5,6 +5,7 @@
 #include <string>
 
 #include "bezel/image.hpp"
+#include "image/css_colours.hpp"
 
 namespace bezel {
 
@@ -17,41 +18,33 @@ int hex_digit(char c) {
     return -1;
 }
 
-struct NamedColor {
-    const char* name;
-    Rgba8 color;
-};
-// CSS's values for the few names accepted (CSS "green" is #008000, not #00FF00).
-constexpr NamedColor kNamedColors[] = {
-    {"black", {0, 0, 0, 255}},       {"white", {255, 255, 255, 255}},
-    {"red", {255, 0, 0, 255}},       {"green", {0, 128, 0, 255}},
-    {"blue", {0, 0, 255, 255}},      {"transparent", {0, 0, 0, 0}},
-};
-
 }  // namespace
 
 Expected<Rgba8> parse_color(std::string_view text) {
     std::string lower(text);
     std::transform(lower.begin(), lower.end(), lower.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    for (const NamedColor& n : kNamedColors)
-        if (lower == n.name) return n.color;
+    if (auto named = image_detail::css_colour(lower)) return *named;
 
     const std::string quoted = "colour '" + std::string(text) + "'";
     std::string_view hex = text;
     bool hash = !hex.empty() && hex.front() == '#';
     if (hash) hex.remove_prefix(1);
+    const char* const expected = "expected #RRGGBB, #RRGGBBAA, #RGB, #RGBA or a CSS colour name";
+    // A word without '#' that is not all hex digits was meant as a name ("yelow").
+    if (!hash && std::any_of(hex.begin(), hex.end(), [](char c) { return hex_digit(c) < 0; }))
+        return Error{quoted + ": not a CSS colour name (" + expected + ")"};
     int digits[8];
     for (std::size_t i = 0; i < hex.size() && i < 8; ++i) {
         digits[i] = hex_digit(hex[i]);
         if (digits[i] < 0)
             return Error{quoted + ": '" + std::string(1, hex[i]) +
-                         "' is not a hex digit (expected #RRGGBB, #RRGGBBAA, #RGB, #RGBA or a name)"};
+                         "' is not a hex digit (" + expected + ")"};
     }
     // The short forms need the '#': "abc" alone reads more like a typo than a colour.
     bool short_form = hash && (hex.size() == 3 || hex.size() == 4);
     if (!short_form && hex.size() != 6 && hex.size() != 8)
-        return Error{quoted + ": expected #RRGGBB, #RRGGBBAA, #RGB, #RGBA or a colour name"};
+        return Error{quoted + ": " + expected};
     std::uint8_t channel[4] = {0, 0, 0, 255};
     std::size_t count = short_form ? hex.size() : hex.size() / 2;
     for (std::size_t i = 0; i < count; ++i) {

@@ -116,7 +116,8 @@ Status check_size(int width, int height) {
     std::string size = std::to_string(width) + "x" + std::to_string(height);
     if (width <= 0 || height <= 0) return Error{"cannot write an empty " + size + " image as PNG"};
     if (width > kMaxImageDim || height > kMaxImageDim)
-        return Error{"image " + size + " exceeds kMaxImageDim (" + std::to_string(kMaxImageDim) + ")"};
+        return Error{"image " + size + " is larger than the " + std::to_string(kMaxImageDim) +
+                     " px a side images may have"};
     return ok_status();
 }
 

@@ -31,7 +31,8 @@ Status write_png_gray(const std::string& file, ConstMaskView mask) {
                      std::to_string(mask.height) + " image as PNG"};
     if (mask.width > kMaxImageDim || mask.height > kMaxImageDim)
         return Error{file + ": image " + std::to_string(mask.width) + "x" +
-                     std::to_string(mask.height) + " exceeds kMaxImageDim"};
+                     std::to_string(mask.height) + " is larger than the " +
+                     std::to_string(kMaxImageDim) + " px a side images may have"};
     FilePtr f(std::fopen(file.c_str(), "wb"));
     if (!f) return Error{file + ": cannot create file"};
     png_image image{};

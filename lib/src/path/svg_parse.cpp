@@ -169,7 +169,7 @@ private:
         if (pts.size() > kMaxSvgPathPoints)
             return Lexer::error_at(set_offset, "path has more than " +
                                                    std::to_string(kMaxSvgPathPoints) +
-                                                   " points (kMaxSvgPathPoints)");
+                                                   " points");
         for (std::size_t i = checked_; i < pts.size(); ++i)
             if (!pts[i].is_finite())
                 return Lexer::error_at(set_offset, "coordinates overflow double");
@@ -191,7 +191,7 @@ private:
 Expected<Path> parse_svg_path(std::string_view data, const SvgParseOptions& options) {
     if (data.size() > kMaxSvgPathLength)
         return Error{"path data: " + std::to_string(data.size()) + " bytes exceeds the limit of " +
-                     std::to_string(kMaxSvgPathLength) + " (kMaxSvgPathLength)"};
+                     std::to_string(kMaxSvgPathLength) + " bytes"};
     if (!(std::isfinite(options.arc_tolerance) && options.arc_tolerance > 0.0)) {
         char got[32];
         std::snprintf(got, sizeof got, "%g", options.arc_tolerance);

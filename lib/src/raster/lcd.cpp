@@ -55,7 +55,7 @@ Status Rasterizer::fill_path_lcd(const Path& path, const Affine& transform,
     if (W < 0 || H < 0 || samples_w > kMaxBitmapDim || H > kMaxBitmapDim)
         return Error{"LCD target " + std::to_string(W) + "x" + std::to_string(H) +
                      " is outside 0.." + std::to_string(kMaxBitmapDim - 2 * kFilterReach) + "x" +
-                     std::to_string(kMaxBitmapDim) + " (kMaxBitmapDim less the filter's reach)"};
+                     std::to_string(kMaxBitmapDim) + " (the bitmap limit less the filter's reach)"};
     if (W % 3 != 0)
         return Error{"LCD target width " + std::to_string(W) +
                      " is not a multiple of 3 (3 bytes per display pixel)"};

@@ -4,6 +4,7 @@
 // count is bounded BEFORE flattening allocates anything.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "bezel/raster.hpp"
@@ -14,6 +15,13 @@
 namespace bezel {
 
 namespace {
+
+// The tolerance in a message: "%g" (6 significant digits), not std::to_string's "%f".
+std::string tolerance_text(double px) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%g", px);
+    return buf;
+}
 
 // Wang's formula: a Bézier of degree d flattened into n uniform steps deviates at most
 // d(d−1)/8 · M / n² from its polyline, M = max |Pᵢ − 2Pᵢ₊₁ + Pᵢ₊₂| (second differences of the
@@ -91,8 +99,8 @@ Status Rasterizer::fill_path_impl(const Path& path, const Affine& transform, Fil
         return Error{"fill_path: path would flatten to about " +
                      (std::isfinite(estimate) ? std::to_string(static_cast<long long>(estimate))
                                               : std::string("infinitely many")) +
-                     " segments at tolerance " + std::to_string(options.tolerance_px) +
-                     " px, more than kMaxEdges (" + std::to_string(kMaxEdges) + ")"};
+                     " segments at tolerance " + tolerance_text(options.tolerance_px) +
+                     " px, more than the " + std::to_string(kMaxEdges) + " a fill takes"};
     flattened_.clear();
     // WangUniform (the default) goes through the balanced flattener (render_flatten.hpp): same
     // step count, vertices moved so each chord has zero mean area error. Anything it does not

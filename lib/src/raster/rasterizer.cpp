@@ -30,7 +30,7 @@ template <typename View>
 Status check_target(const View& t) {
     if (t.width < 0 || t.height < 0 || t.width > kMaxBitmapDim || t.height > kMaxBitmapDim)
         return Error{"raster target " + std::to_string(t.width) + "x" + std::to_string(t.height) +
-                     " is outside 0.." + std::to_string(kMaxBitmapDim) + " (kMaxBitmapDim)"};
+                     " is outside 0.." + std::to_string(kMaxBitmapDim) + " px a side"};
     if (t.data == nullptr && t.width > 0 && t.height > 0)
         return Error{"raster target " + std::to_string(t.width) + "x" + std::to_string(t.height) +
                      " has no pixel memory (null data)"};
@@ -40,7 +40,7 @@ Status check_target(const View& t) {
 Status check_polylines(const Polylines& lines) {
     if (lines.points.size() > kMaxEdges)
         return Error{"polylines have " + std::to_string(lines.points.size()) +
-                     " segments, more than kMaxEdges (" + std::to_string(kMaxEdges) + ")"};
+                     " segments, more than the " + std::to_string(kMaxEdges) + " a fill takes"};
     std::size_t prev = 0;
     for (std::size_t end : lines.contour_ends) {
         if (end < prev || end > lines.points.size())

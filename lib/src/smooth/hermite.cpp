@@ -1,6 +1,8 @@
 // Hermite curves from points and tangents, and the cardinal spline as its special case.
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
+#include <string>
 
 #include "bezel/bezier.hpp"
 #include "bezel/smooth.hpp"
@@ -11,6 +13,13 @@ namespace bezel {
 using smooth_detail::method_error;
 
 namespace {
+
+// The tension in a message: "%g" (6 significant digits), not std::to_string's "%f".
+std::string tension_text(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
 constexpr const char* kHermite = "hermite";
 constexpr const char* kCardinal = "cardinal spline";
 }  // namespace
@@ -48,7 +57,7 @@ Expected<std::vector<Vec2>> cardinal_tangents(const std::vector<Point>& points, 
                                               bool closed) {
     if (!(std::isfinite(tension) && tension >= 0.0))
         return method_error(kCardinal,
-                            "tension " + std::to_string(tension) + " is not a finite number ≥ 0");
+                            "tension " + tension_text(tension) + " is not a finite number ≥ 0");
     auto prepared = smooth_detail::prepare_points(kCardinal, points, closed, 2, 3);
     if (!prepared) return prepared.error();
     const std::vector<Point>& p = *prepared;
@@ -62,7 +71,7 @@ Expected<std::vector<Vec2>> cardinal_tangents(const std::vector<Point>& points, 
         // A finite τ can still overflow (τ = 1e308 times a span of 2): an error, like every
         // other overflow here, never an infinite tangent.
         if (!std::isfinite(t[i].x) || !std::isfinite(t[i].y))
-            return method_error(kCardinal, "tension " + std::to_string(tension) +
+            return method_error(kCardinal, "tension " + tension_text(tension) +
                                                " overflows the tangent at points[" +
                                                std::to_string(i) + "]");
     }

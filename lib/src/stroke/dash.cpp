@@ -129,8 +129,8 @@ Expected<Path> stroke_detail::dash_limited(const Path& path, const std::vector<d
     }
     if (!(estimate <= static_cast<double>(kMaxDashes)))
         return Error{"dash pattern: about " + stroke_detail::num(estimate) +
-                     " dashes over this path, more than kMaxDashes (" +
-                     std::to_string(kMaxDashes) + ")"};
+                     " dashes over this path, more than the " + std::to_string(kMaxDashes) +
+                     " allowed"};
     // The dashes the caller will turn into output (a zero-length one may make none), at the
     // fewest segments each: past the caller's bound the result could only fail later, slowly.
     const double made = estimate * counted / static_cast<double>(n / 2);
@@ -141,7 +141,7 @@ Expected<Path> stroke_detail::dash_limited(const Path& path, const std::vector<d
                      std::to_string(limit.segments_per_dash) +
                      " verbs each: the outline would exceed " +
                      std::to_string(limit.max_segments) +
-                     " segments (kMaxStrokeSegments); lengthen the dashes or shorten the path"};
+                     " segments (the stroker's limit); lengthen the dashes or shorten the path"};
 
     // Where the pattern stands at the start of every contour.
     double phase = std::fmod(dash_offset, period);

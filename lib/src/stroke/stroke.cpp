@@ -119,7 +119,7 @@ Expected<Path> stroke(const Path& path, const StrokeStyle& style) {
         stroke_contour(contour, style, tol, size, budget, out);
         if (budget.exceeded() || out.verbs().size() > kMaxStrokeSegments)
             return Error{"stroke: the outline would exceed " + std::to_string(kMaxStrokeSegments) +
-                         " segments (kMaxStrokeSegments); raise the tolerance or simplify the path"};
+                         " segments (the stroker's limit); raise the tolerance or simplify the path"};
     }
     if (!out.is_finite()) return Error{"stroke: the outline overflowed (coordinates too large)"};
     return out;

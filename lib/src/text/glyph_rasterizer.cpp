@@ -11,6 +11,7 @@
 //   FreeType  the control box and the offset in 26.6 fixed point, floor/ceil, as FreeType's
 //             ft_glyphslot_preset_bitmap (y up there: bitmap_top is the ceiling of the box's top).
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "bezel/glyph.hpp"
@@ -23,13 +24,19 @@ bool is_lcd(const GlyphRenderOptions& o) { return o.fill.format == CoverageForma
 
 std::string glyph_label(GlyphId gid) { return "glyph " + std::to_string(gid); }
 
+// A number in a message: "%g" (6 significant digits), not std::to_string's "%f".
+std::string format_number(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
 Status check_options(GlyphId gid, const GlyphRenderOptions& o) {
     auto in_range = [](double v) { return std::fabs(v) <= kMaxGlyphOffsetPx; };  // NaN fails
     if (!in_range(o.offset_px.x) || !in_range(o.offset_px.y))
-        return Error{glyph_label(gid) + ": pen offset (" + std::to_string(o.offset_px.x) + ", " +
-                     std::to_string(o.offset_px.y) + ") is not finite or beyond ±" +
-                     std::to_string(static_cast<int>(kMaxGlyphOffsetPx)) +
-                     " px (kMaxGlyphOffsetPx)"};
+        return Error{glyph_label(gid) + ": pen offset (" + format_number(o.offset_px.x) + ", " +
+                     format_number(o.offset_px.y) + ") is not finite or beyond ±" +
+                     std::to_string(static_cast<int>(kMaxGlyphOffsetPx)) + " px"};
     if (o.fill.origin.x != 0 || o.fill.origin.y != 0)
         return Error{glyph_label(gid) + ": fill.origin must be zero (offset_px places the pen)"};
     return ok_status();
@@ -44,9 +51,10 @@ Status tight_box(GlyphId gid, const Path& path, const GlyphRenderOptions& o, Gly
     const double y0 = std::floor(b.y0 + o.offset_px.y), y1 = std::ceil(b.y1 + o.offset_px.y);
     if (!(x1 - x0 <= kMaxBitmapDim && y1 - y0 <= kMaxBitmapDim && std::fabs(x0) <= kMaxBitmapDim &&
           std::fabs(y0) <= kMaxBitmapDim))
-        return Error{glyph_label(gid) + ": bitmap of " + std::to_string(x1 - x0) + "x" +
-                     std::to_string(y1 - y0) + " px exceeds kMaxBitmapDim (" +
-                     std::to_string(kMaxBitmapDim) + ")"};
+        return Error{glyph_label(gid) + ": a bitmap of " + format_number(x1 - x0) + "x" +
+                     format_number(y1 - y0) + " px at (" + format_number(x0) + ", " +
+                     format_number(y0) + ") from the pen reaches past the " +
+                     std::to_string(kMaxBitmapDim) + " px bitmaps may span"};
     const int pad = is_lcd(o) ? kLcdPaddingPx : 0;
     box.left = static_cast<int>(x0) - pad;
     box.top = -static_cast<int>(y0);
@@ -71,8 +79,8 @@ Status freetype_box(GlyphId gid, const Rect& b, const GlyphRenderOptions& o, Gly
     const long long w = x1 - x0 + 2 * pad, h = y1 - y0;
     if (w > kMaxBitmapDim || h > kMaxBitmapDim)
         return Error{glyph_label(gid) + ": a bitmap of " + std::to_string(w) + "x" +
-                     std::to_string(h) + " px is larger than " + std::to_string(kMaxBitmapDim) +
-                     " (kMaxBitmapDim)"};
+                     std::to_string(h) + " px is larger than the " + std::to_string(kMaxBitmapDim) +
+                     " px a side bitmaps may have"};
     box.left = static_cast<int>(x0 - pad);
     box.top = static_cast<int>(y1);
     box.width = static_cast<int>(w);

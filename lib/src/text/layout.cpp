@@ -38,11 +38,16 @@ bool is_newline(char32_t c) {
            c == 0x2029;
 }
 
-Status check_length(const char* name, double v) {
-    if (std::isfinite(v) && v >= 0) return ok_status();
+// A number in a message: "%g" (6 significant digits), not std::to_string's "%f".
+std::string format_num(double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%g", v);
-    return Error{std::string("layout ") + name + " " + buf + ": must be a finite number >= 0"};
+    return buf;
+}
+
+Status check_length(const char* name, double v) {
+    if (std::isfinite(v) && v >= 0) return ok_status();
+    return Error{std::string("layout ") + name + " " + format_num(v) + ": must be a finite number >= 0"};
 }
 
 struct LineSpan {
@@ -359,10 +364,23 @@ Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
     // second line at infinity (a fuzz_text finding). The block's size bounds every position.
     if (!std::isfinite(out.width_px) || !std::isfinite(out.height_px))
         return Error{"layout: the text block would be infinitely large (line_height " +
-                     std::to_string(layout.line_height) + ", margin_px " +
-                     std::to_string(layout.margin_px) + ", width_px " +
-                     std::to_string(layout.width_px) + ")"};
+                     format_num(layout.line_height) + ", margin_px " +
+                     format_num(layout.margin_px) + ", width_px " +
+                     format_num(layout.width_px) + ")"};
     return out;
+}
+
+MissingGlyphs find_missing_glyphs(const TextLayout& layout, std::string_view utf8) {
+    MissingGlyphs missing;
+    for (const PlacedGlyph& g : layout.glyphs) {
+        if (g.gid != 0) continue;
+        // Glyphs are in visual order: the first in the text is the smallest cluster.
+        if (missing.count == 0 || g.cluster < missing.first_cluster) missing.first_cluster = g.cluster;
+        ++missing.count;
+    }
+    if (missing.count > 0 && missing.first_cluster < utf8.size())
+        text_detail::decode_one(utf8, missing.first_cluster, missing.first_code_point);
+    return missing;
 }
 
 }  // namespace bezel

@@ -129,6 +129,18 @@ Shaper::Shaper(Shaper&&) noexcept = default;
 Shaper& Shaper::operator=(Shaper&&) noexcept = default;
 Shaper::~Shaper() = default;
 
+Status check_script_tag(const std::string& tag) {
+    auto script = parse_script_tag(tag);
+    if (!script) return script.error();
+    return ok_status();
+}
+
+Status check_language_tag(const std::string& tag) {
+    auto language = parse_language_tag(tag);
+    if (!language) return language.error();
+    return ok_status();
+}
+
 Expected<Shaper> Shaper::open(const std::string& file, int face_index) {
     if (auto ok = check_font_file(file); !ok) return ok.error();
     auto impl = std::make_unique<Impl>();

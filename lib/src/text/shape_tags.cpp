@@ -11,11 +11,32 @@ std::string tag_string(hb_tag_t tag) {
     return std::string(s, 4);
 }
 
+namespace {
+
+// Whether HarfBuzz's Unicode data gives `script` to some character. hb_script_from_string turns
+// any four letters into a script value ("Xyzw" included), so this is what tells a real script
+// from a typo. The scan stops at the script's first character: U+0041 for Latn, U+1E900 for
+// Adlm; only a tag that names no script goes through all 0x110000 code points, on the way to
+// an error.
+bool unicode_has_script(hb_script_t script) {
+    hb_unicode_funcs_t* ucd = hb_unicode_funcs_get_default();
+    for (hb_codepoint_t cp = 0; cp <= 0x10FFFF; ++cp)
+        if (hb_unicode_script(ucd, cp) == script) return true;
+    return false;
+}
+
+}  // namespace
+
 Expected<hb_script_t> parse_script_tag(const std::string& tag) {
     bool ok = tag.size() == 4;
     for (char c : tag) ok = ok && std::isalpha(static_cast<unsigned char>(c));
     if (!ok) return Error{"script '" + tag + "': not an ISO 15924 tag (four letters, e.g. Arab)"};
-    return hb_script_from_string(tag.c_str(), 4);
+    // Aliases map to their script here (Hans and Hant to Hani, Latf to Latn, Qaai to Zinh).
+    const hb_script_t script = hb_script_from_string(tag.c_str(), 4);
+    // Zmth (mathematical notation) is a script HarfBuzz shapes with but no character has.
+    if (script != HB_SCRIPT_MATH && !unicode_has_script(script))
+        return Error{"script '" + tag + "': not a script HarfBuzz knows (ISO 15924, e.g. Latn, Arab, Deva)"};
+    return script;
 }
 
 Expected<hb_language_t> parse_language_tag(const std::string& tag) {

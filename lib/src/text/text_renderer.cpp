@@ -7,6 +7,7 @@
 // stems stay crisp.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <utility>
@@ -44,6 +45,14 @@ bool same_variations(const std::vector<VariationSetting>& a, const std::vector<V
     return true;
 }
 
+// A whole number of pixels as digits ("3934407"), however large: "%.0f" never switches to an
+// exponent and needs no conversion to an integer type that might not hold it.
+std::string whole_number(double v) {
+    char buf[320];
+    std::snprintf(buf, sizeof buf, "%.0f", v);
+    return buf;
+}
+
 }  // namespace
 
 struct TextRenderer::Impl {
@@ -53,6 +62,7 @@ struct TextRenderer::Impl {
     GlyphCache cache;
     std::vector<VariationSetting> variations;
     std::uint64_t font_id;
+    MissingGlyphs missing;   // of the last draw
 
     Impl(Font f, Shaper s, std::size_t cache_bytes)
         : font(std::move(f)), shaper(std::move(s)), rasterizer(font), cache(cache_bytes),
@@ -68,6 +78,7 @@ Expected<TextRenderer> TextRenderer::open(const std::string& file, int face_inde
                                           std::size_t cache_bytes) {
     auto font = Font::open(file, face_index);
     if (!font) return font.error();
+    if (Status s = font->require_outlines(); !s) return s.error();
     auto shaper = Shaper::open(file, face_index);
     if (!shaper) return shaper.error();
     return TextRenderer(std::make_unique<Impl>(std::move(*font), std::move(*shaper), cache_bytes));
@@ -76,6 +87,7 @@ Expected<TextRenderer> TextRenderer::open(const std::string& file, int face_inde
 Font& TextRenderer::font() { return impl_->font; }
 Shaper& TextRenderer::shaper() { return impl_->shaper; }
 GlyphCache& TextRenderer::cache() { return impl_->cache; }
+const MissingGlyphs& TextRenderer::missing_glyphs() const { return impl_->missing; }
 
 // Shapes and lays out `utf8`, makes the page with make_page(width, height), then hands each
 // placed glyph's cached mask and its top-left pixel to blend(page, mask, x, y). One loop for the
@@ -93,12 +105,14 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
         r.variations = options.shape.variations;
         r.font_id = font_id_of(r.variations);
     }
+    r.missing = MissingGlyphs{};
     auto layout = layout_text(r.shaper, r.font.metrics(), utf8, options.shape, options.layout);
     if (!layout) return layout.error();
+    r.missing = find_missing_glyphs(*layout, utf8);
 
     const double w = std::ceil(layout->width_px), h = std::ceil(layout->height_px);
     if (!(w <= kMaxImageDim && h <= kMaxImageDim && w * h <= kMaxPagePixels))
-        return Error{"text page of " + std::to_string(w) + "x" + std::to_string(h) +
+        return Error{"text page of " + whole_number(w) + "x" + whole_number(h) +
                      " px is too large (at most " + std::to_string(kMaxImageDim) + " px a side, " +
                      std::to_string(static_cast<long>(kMaxPagePixels)) + " px in all)"};
     // A page is at least one pixel: empty text still gives a (background) image.
