@@ -14,7 +14,7 @@ like bezel's: so both draw the same outlines at the same size and the pages have
 
 Usage:
   tools/bench/text_weight.py [--bezel PATH] [--sizes 8,10,12] [--fonts A.ttf,B.otf]
-                             [--reference FILE] [-- BEZEL RENDER OPTIONS...]
+                             [--reference FILE] [--pictures DIR] [-- BEZEL RENDER OPTIONS...]
 Everything after `--` goes to `bezel render` (e.g. `-- --rendering linear`). --reference FILE
 writes hb-view's figures as the test data tests/text_weight_test.cpp reads. Needs only python3
 (PNG is decoded here with zlib) and hb-view (Debian libharfbuzz-bin).
@@ -97,6 +97,40 @@ def ink(path, polarity):
     return total, peak, width, height
 
 
+def write_png_gray(path, width, rows):
+    """An 8-bit gray PNG of `rows` (bytes of `width` each), unfiltered."""
+    def chunk(kind, body):
+        return (struct.pack(">I", len(body)) + kind + body +
+                struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF))
+    raw = b"".join(b"\0" + row for row in rows)
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" +
+                chunk(b"IHDR", struct.pack(">IIBBBBB", width, len(rows), 8, 0, 0, 0, 0)) +
+                chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
+def pictures(args, font, sizes, folder, tmp):
+    """For each polarity, three pictures of the text at every size, one line per size (margin 4
+    px): hb-view's, bezel's linear and bezel's default rendering, for the docs."""
+    for polarity, (fg, bg) in POLARITIES.items():
+        for name, command in (
+                ("hbview", [args.hb_view, font]),
+                ("linear", [args.bezel, "render", font, "--rendering", "linear"]),
+                ("default", [args.bezel, "render", font])):
+            lines, width = [], 0
+            for px in sizes:
+                png = os.path.join(tmp, "line.png")
+                subprocess.run(command + ["--text", args.text, "--font-size", str(px),
+                                          "--margin", "4", "--foreground", fg, "--background",
+                                          bg, "-o", png], check=True)
+                w, _, rows = read_png_gray(png)
+                width = max(width, w)
+                lines.append(rows)
+            fill = 255 if polarity == "dark" else 0
+            rows = [row + bytes([fill]) * (width - len(row)) for line in lines for row in line]
+            write_png_gray(os.path.join(folder, f"weight-{name}-{polarity}.png"), width, rows)
+
+
 def main():
     argv = sys.argv[1:]
     extra = []
@@ -111,6 +145,8 @@ def main():
     ap.add_argument("--sizes", default="8,10,12,16,20,24")
     ap.add_argument("--text", default=DEFAULT_TEXT)
     ap.add_argument("--reference", help="write hb-view's figures here (test data)")
+    ap.add_argument("--pictures", metavar="DIR",
+                    help="also write the docs' pictures of the first font here")
     args = ap.parse_args(argv)
     sizes = [int(s) for s in args.sizes.split(",")]
     fonts = args.fonts.split(",")
@@ -150,6 +186,8 @@ def main():
                           f"{ratio:.3f}\t{bz_peak}\t{hb_peak}")
                     reference.append((os.path.relpath(font, os.path.join(ROOT, "fonts-test")),
                                       px, polarity, hb_ink, hb_peak))
+        if args.pictures:
+            pictures(args, fonts[0], sizes, args.pictures, tmp)
     print(f"# worst |ratio - 1|: {worst:.3f}; bezel render options: "
           f"{' '.join(extra) or '(default)'}; {hb_version}")
     if args.reference:
