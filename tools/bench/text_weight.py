@@ -8,9 +8,10 @@ heavy bezel's text looks against hb-view's (cairo, which mixes coverage into the
 bytes as they are). "peak" is the strongest pixel: the darkest value dark-on-light, the brightest
 light-on-dark.
 
-hb-view 6 draws unhinted outlines (cairo's hint style none, FreeType load flags NO_HINTING by
-default) with gray antialiasing, --font-size is the em size in pixels, and its margin is 16 px
-like bezel's: so both draw the same outlines at the same size and the pages have the same size.
+hb-view 6 draws unhinted outlines (--ft-load-flags defaults to 2, FT_LOAD_NO_HINTING) with gray
+antialiasing, --font-size is the em size in pixels, and its margin is 16 px like bezel's: so both
+draw the same outlines at the same size, and the pages have the same size (hb-view's is at most
+a column wider, which the ink does not see).
 
 Usage:
   tools/bench/text_weight.py [--bezel PATH] [--sizes 8,10,12] [--fonts A.ttf,B.otf]
