@@ -136,6 +136,7 @@ TEST(CoverageCurve, OutOfRangeSettingsAreErrorsNamingThem) {
         auto c = coverage_curve(kBlack, kWhite, o);
         ASSERT_FALSE(c) << gamma;
         EXPECT_NE(c.error().message.find("gamma"), std::string::npos) << c.error().message;
+        EXPECT_NE(c.error().message.find("(1 to 3)"), std::string::npos) << c.error().message;
     }
     for (double contrast : {-0.01, 1.01, nan}) {
         CoverageCurveOptions o;

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "bezel/image.hpp"
@@ -39,6 +40,13 @@ double luminance(Rgba8 c) {
            0.0722 * srgb_decode(c.b / 255.0);
 }
 
+// A setting as a person would write it ("0.5", not std::to_string's "0.500000").
+std::string number(double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+}
+
 // Curves made by coverage_curve get ids from 1 up; 0 is the identity.
 std::atomic<std::uint64_t> g_next_curve_id{1};
 
@@ -57,12 +65,13 @@ Expected<CoverageCurve> coverage_curve(Rgba8 foreground, Rgba8 background,
     CoverageCurve curve;
     if (options.rendering == TextRendering::Linear) return curve;
     const double gamma = options.gamma, k = options.contrast;
+    // Written so that NaN fails too.
     if (!(gamma >= kMinTextGamma && gamma <= kMaxTextGamma))
-        return Error{"text gamma " + std::to_string(gamma) + " is out of range (" +
-                     std::to_string(kMinTextGamma) + " to " + std::to_string(kMaxTextGamma) + ")"};
+        return Error{"text gamma " + number(gamma) + " is out of range (" + number(kMinTextGamma) +
+                     " to " + number(kMaxTextGamma) + ")"};
     if (!(k >= 0.0 && k <= kMaxTextContrast))
-        return Error{"text contrast " + std::to_string(k) + " is out of range (0 to " +
-                     std::to_string(kMaxTextContrast) + ")"};
+        return Error{"text contrast " + number(k) + " is out of range (0 to " +
+                     number(kMaxTextContrast) + ")"};
 
     const double yf = luminance(foreground);
     double yb = luminance(background);
