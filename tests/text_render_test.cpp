@@ -67,10 +67,13 @@ void expect_matches_golden(const Image& image, const std::string& name) {
     EXPECT_LE(worst, kGoldenTolerance) << name;
 }
 
+// The goldens hold the exact linear-light mix (TextRendering::Linear), unchanged by the default
+// rendering; the default's own golden is perceptual_line_12.
 TextRenderOptions line_options(double size) {
     TextRenderOptions o;
     o.shape.size_px = size;
     o.layout.margin_px = 4;
+    o.coverage.rendering = TextRendering::Linear;
     return o;
 }
 
@@ -94,6 +97,26 @@ TEST(TextRenderer, LinesMatchGoldenImages) {
     image = cantarell->render("Cubic outlines: &@Qg 0123", line_options(20));
     ASSERT_TRUE(image) << image.error().message;
     expect_matches_golden(*image, "cantarell_line_20");
+}
+
+TEST(TextRenderer, DefaultRenderingMatchesItsGolden) {
+    auto dejavu = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(dejavu) << dejavu.error().message;
+    TextRenderOptions o = line_options(12);
+    o.coverage = CoverageCurveOptions();
+    auto image = dejavu->render("Hamburgefonstiv AV Wa To office", o);
+    ASSERT_TRUE(image) << image.error().message;
+    expect_matches_golden(*image, "perceptual_line_12");
+    // The same line in the exact mix is lighter: less ink.
+    auto linear = dejavu->render("Hamburgefonstiv AV Wa To office", line_options(12));
+    ASSERT_TRUE(linear) << linear.error().message;
+    long long ink = 0, linear_ink = 0;
+    for (int y = 0; y < image->height(); ++y)
+        for (int x = 0; x < image->width(); ++x) {
+            ink += 255 - image->at(x, y).r;
+            linear_ink += 255 - linear->at(x, y).r;
+        }
+    EXPECT_GT(ink, linear_ink * 5 / 4);
 }
 
 TEST(TextRenderer, SecondRenderOfTheSameTextOnlyHitsTheCache) {

@@ -15,9 +15,10 @@
 #include "bezel/text.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
-#include "parse_check.hpp"
+#include "draw.hpp"
 #include "font_args.hpp"
 #include "missing_glyphs.hpp"
+#include "parse_check.hpp"
 #include "render_output.hpp"
 #include "sample_text.hpp"
 
@@ -54,12 +55,39 @@ struct RenderArgs {
     std::string foreground = "#000000";
     std::string background = "#FFFFFF";
     std::string lcd;            // --lcd rgb|bgr
+    std::string rendering = "perceptual";  // --rendering
+    double gamma = kDefaultTextGamma;       // --gamma
+    double contrast = kDefaultTextContrast; // --contrast
     double stroke_px = 0;       // --stroke: outlined text this wide; 0 = filled glyphs
     std::string format;         // -O
     std::string output_file;    // -o
     bool strict = false;        // --strict
     CLI::App* cmd = nullptr;
 };
+
+// --rendering NAME: the library's TextRendering.
+Expected<TextRendering> parse_rendering(const std::string& name) {
+    if (name == "perceptual") return TextRendering::Perceptual;
+    if (name == "linear") return TextRendering::Linear;
+    return Error{"'" + name + "': expected perceptual or linear"};
+}
+
+// --gamma G and --contrast C as typed: finite numbers in the library's ranges (NaN fails too).
+Expected<double> parse_text_gamma(const std::string& text) {
+    const std::optional<double> g = parse_number(text);
+    if (!g) return Error{"'" + text + "': not a number"};
+    if (!(*g >= kMinTextGamma && *g <= kMaxTextGamma))
+        return Error{"'" + text + "': must be >= " + svg_number(kMinTextGamma) + " and <= " +
+                     svg_number(kMaxTextGamma)};
+    return *g;
+}
+Expected<double> parse_text_contrast(const std::string& text) {
+    const std::optional<double> k = parse_number(text);
+    if (!k) return Error{"'" + text + "': not a number"};
+    if (!(*k >= 0.0 && *k <= kMaxTextContrast))
+        return Error{"'" + text + "': must be >= 0 and <= " + svg_number(kMaxTextContrast)};
+    return *k;
+}
 
 Expected<bezel::Direction> parse_direction(const std::string& name) {
     if (name.empty() || name == "auto") return bezel::Direction::Auto;
@@ -115,6 +143,9 @@ Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
     Image page(std::max(1, static_cast<int>(w)), std::max(1, static_cast<int>(h)),
                options.background);
 
+    auto made = coverage_curve(options.foreground, options.background, options.coverage);
+    if (!made) return made.error();
+    const CoverageCurve& curve = *made;
     StrokeStyle style;
     style.width = stroke_px;
     style.join = LineJoin::Round;
@@ -145,7 +176,7 @@ Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
                                            {FillRule::NonZero, OverlapMode::Accurate});
         if (!filled) return filled.error();
         blend_mask(page, coverage.view(), static_cast<int>(x0), static_cast<int>(y0),
-                   options.foreground);
+                   options.foreground, curve);
     }
     return page;
 }
@@ -192,6 +223,16 @@ int run_render(RenderArgs& args) {
     options.background = *bg;
     options.format = args.lcd.empty() ? CoverageFormat::Gray : CoverageFormat::Lcd;
     options.lcd_order = args.lcd == "bgr" ? LcdOrder::Bgr : LcdOrder::Rgb;
+
+    options.coverage.rendering = *parse_rendering(args.rendering);  // checked by the option
+    options.coverage.gamma = args.gamma;
+    options.coverage.contrast = args.contrast;
+    if (options.coverage.rendering == TextRendering::Linear)
+        for (const char* tuning : {"--gamma", "--contrast"})
+            if (args.cmd->count(tuning) > 0)
+                return fail_usage(std::string(tuning) + ": tunes --rendering perceptual; "
+                                  "--rendering linear mixes exact coverage",
+                                  kRenderCommand);
 
     if (args.stroke_px > 0 && options.format != CoverageFormat::Gray)
         return fail_usage("--stroke draws gray coverage; it does not combine with --lcd", kRenderCommand);
@@ -317,6 +358,23 @@ Command add_render_command(CLI::App& app) {
     cmd->add_option("--lcd", args->lcd, "LCD subpixel rendering for rgb or bgr panels")
         ->type_name("ORDER")
         ->check(CLI::IsMember({"rgb", "bgr"}));
+    cmd->add_option("--rendering", args->rendering,
+                    "How coverage becomes ink: perceptual (default: text as heavy as hb-view "
+                    "draws it, both dark on light and light on dark) or linear (exact coverage "
+                    "mixed in linear light, for compositing)")
+        ->type_name("NAME")
+        ->check(parse_check(parse_rendering, "rendering"));
+    cmd->add_option("--gamma", args->gamma,
+                    "perceptual: mix coverage as if pixel values v were light v^G; 1 mixes the "
+                    "encoded values as they are (as hb-view), 2.2 is near linear light "
+                    "(default " + svg_number(kDefaultTextGamma) + ", range 1-3)")
+        ->type_name("G")
+        ->check(parse_check(parse_text_gamma, "gamma"));
+    cmd->add_option("--contrast", args->contrast,
+                    "perceptual: lift coverage c by C*c*(1-c) first, heavier text in both "
+                    "polarities (default " + svg_number(kDefaultTextContrast) + ", range 0-1)")
+        ->type_name("C")
+        ->check(parse_check(parse_text_contrast, "contrast"));
     cmd->add_option("--stroke", args->stroke_px,
                     "Outlined text: stroke each glyph's outline this many pixels wide (round "
                     "joins) instead of filling it")

@@ -9,11 +9,13 @@
 // Colour images: `Image` holds straight (non-premultiplied) sRGB-encoded RGBA8. Coverage masks
 // are LINEAR (area fractions); blending converts colours to linear light (the sRGB transfer
 // function, IEC 61966-2-1), mixes there, and encodes back, so anti-aliased edges keep their
-// weight on any background. The formula and tables are at the implementation.
+// weight on any background. The formula and tables are at the implementation. Text may map its
+// coverage through a CoverageCurve first, for the weight readers expect (TextRendering, below).
 //
 // Only this module sees libpng.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -150,20 +152,92 @@ private:
 // order of the three coverage bytes of a display pixel in an LCD mask.
 enum class LcdOrder : std::uint8_t { Rgb, Bgr };
 
+// --- Text weight: how coverage becomes ink ------------------------------------------------------
+// Mixing exact coverage in linear light is right for compositing, but readers judge text by the
+// weight renderers that mix sRGB-encoded values (cairo, hence hb-view, and most toolkits) give
+// it: by that measure linear-light text is thin dark on light and heavy light on dark, the more
+// so the smaller it is (docs/text.md has the figures). A CoverageCurve maps each coverage to the
+// alpha the linear-light blend then uses, made for one foreground / background pair so that the
+// page comes out as such a renderer's would, in both polarities.
+enum class TextRendering : std::uint8_t {
+    // Coverage mixed in linear light as it is (alpha = coverage / 255): exact, for compositing
+    // and measuring. Bit for bit what the blend functions without a curve do.
+    Linear,
+    // Coverage mixed as if pixel values v were light v^gamma (Skia's gamma hint: 1 mixes the
+    // encoded values as they are, as cairo and hb-view do; about 2.2 is linear light again),
+    // after a contrast lift c + contrast·c·(1 − c) (Skia's contrast hint). Formula at the
+    // implementation (image/coverage_curve.cpp).
+    Perceptual,
+};
+// Valid ranges of CoverageCurveOptions. Gamma runs from 1 (the encoded values as they are) to a
+// little past sRGB's own ~2.2 (linear light): outside that span a curve only exaggerates one
+// polarity further than any renderer's gamma hint does; weight in both polarities is the
+// contrast's job. Contrast past 1 would make the lift non-monotone (dc1/dc = 1 + k(1 − 2c) turns
+// negative near c = 1).
+inline constexpr double kMinTextGamma = 1.0;
+inline constexpr double kMaxTextGamma = 3.0;
+inline constexpr double kMaxTextContrast = 1.0;
+// The default, chosen by measurement against hb-view (tools/bench/text_weight.py, docs/text.md):
+// of the settings swept it is the one nearest hb-view's ink, within 2 % at 8-24 px in both
+// polarities on DejaVu Sans and Cantarell (tests/text_weight_test.cpp holds it to 10 %).
+inline constexpr double kDefaultTextGamma = 1.0;
+inline constexpr double kDefaultTextContrast = 0.0;
+
+struct CoverageCurveOptions {
+    TextRendering rendering = TextRendering::Perceptual;
+    double gamma = kDefaultTextGamma;        // Perceptual: [kMinTextGamma, kMaxTextGamma]
+    double contrast = kDefaultTextContrast;  // Perceptual: [0, kMaxTextContrast]
+};
+
+// The alpha (in [0, 1]) the linear-light blend uses for each 8-bit coverage. Immutable; cheap to
+// compare (curves made by one call, and their copies, share an identity), so the blend functions
+// key their per-thread tables on it. Invariants (tested): alpha(0) = 0, alpha(255) = 1,
+// non-decreasing.
+class CoverageCurve {
+public:
+    // The identity, TextRendering::Linear: alpha = coverage / 255.
+    CoverageCurve();
+    float operator[](std::uint8_t coverage) const { return alpha_[coverage]; }
+    const std::array<float, 256>& alphas() const { return alpha_; }
+    bool linear() const { return id_ == 0; }
+    // Equal identities mean equal tables (the converse need not hold).
+    bool same_as(const CoverageCurve& o) const { return id_ == o.id_; }
+
+private:
+    friend Expected<CoverageCurve> coverage_curve(Rgba8, Rgba8, const CoverageCurveOptions&);
+    std::array<float, 256> alpha_;
+    std::uint64_t id_ = 0;
+};
+
+// The curve for text in `foreground` on `background`, computed once (a few hundred pow calls)
+// for a page; both colours' alpha is ignored except that a background which is not opaque is
+// taken over the backdrop text of that colour is usually read on (white under text darker than
+// mid gray, black under lighter text). Errors name the option out of range (or NaN).
+Expected<CoverageCurve> coverage_curve(Rgba8 foreground, Rgba8 background,
+                                       const CoverageCurveOptions& options);
+
 // Blends `color` through the coverage `mask` onto `image` with the mask's top-left pixel at
 // (x, y) (parts outside the image are clipped), in linear light: for each channel
-// out = enc(lerp(dec(dst), dec(color), coverage·color.a)). Alpha is composited "over".
+// out = enc(lerp(dec(dst), dec(color), α)) with α = curve[coverage]·color.a (α = coverage·
+// color.a without a curve). Alpha is composited "over".
 void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color);
+void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color,
+                const CoverageCurve& curve);
 // The same for an LCD mask (3 bytes per pixel, `mask.width` = 3 × pixels, the bytes of each
-// pixel in `order`: R, G, B or B, G, R): each colour channel uses its own subpixel coverage.
+// pixel in `order`: R, G, B or B, G, R): each colour channel uses its own subpixel coverage
+// (each through the curve).
 // Masks from the Rasterizer's CoverageFormat::Lcd are R, G, B in memory for either panel order:
 // pass LcdOrder::Rgb.
 void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, LcdOrder order);
+void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, LcdOrder order,
+                    const CoverageCurve& curve);
 
 // The same for a gray page (one sRGB-encoded byte per pixel, opaque) and an opaque gray colour:
-// out = enc(lerp(dec(dst), dec(gray), coverage)). Equal, pixel for pixel, to blend_mask on an
+// out = enc(lerp(dec(dst), dec(gray), α)). Equal, pixel for pixel, to blend_mask on an
 // RGBA page of the same grays (where r = g = b = that byte), at a quarter of the memory.
 void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8_t gray);
+void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8_t gray,
+                     const CoverageCurve& curve);
 
 // PNG colour layouts for writing.
 enum class PngColor : std::uint8_t { Gray, Rgb, Rgba };

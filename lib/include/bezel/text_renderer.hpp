@@ -31,6 +31,10 @@ struct TextRenderOptions {
     Hinting hinting = Hinting::None;
     Rgba8 foreground{0, 0, 0, 255};
     Rgba8 background{255, 255, 255, 255};
+    // How coverage becomes ink (image.hpp): by default Perceptual, text as heavy as renderers
+    // that mix encoded values draw it, in both polarities; TextRendering::Linear for the exact
+    // linear-light mix (compositing, measuring). One curve per render, from the two colours.
+    CoverageCurveOptions coverage;
 };
 
 // Receives the rows of a page that are finished while the rest is still drawn
@@ -65,9 +69,10 @@ public:
     const MissingGlyphs& missing_glyphs() const;
 
     // Shapes, lays out and draws `utf8` onto a new image sized to the layout (RGBA: background
-    // filled, glyphs blended in linear light as image.hpp's blend functions). Errors as
-    // layout_text, plus an image larger than kMaxImageDim, and CoverageFormat::Lcd with a
-    // background that is not opaque (one alpha channel cannot hold three subpixel coverages).
+    // filled, glyphs blended in linear light as image.hpp's blend functions, through the
+    // coverage curve of options.coverage). Errors as layout_text and coverage_curve, plus an
+    // image larger than kMaxImageDim, and CoverageFormat::Lcd with a background that is not
+    // opaque (one alpha channel cannot hold three subpixel coverages).
     Expected<Image> render(std::string_view utf8, const TextRenderOptions& options);
     // The same page as one sRGB gray byte per pixel, for gray-on-gray text (what PNG and PGM
     // output of such text stores): equal to render()'s red (= green = blue) channel, pixel for

@@ -6,6 +6,9 @@
 //   out.a = α + dst.a·(1 − α)
 //   out.c = enc((dec(src.c)·α + dec(dst.c)·dst.a·(1 − α)) / out.a)
 // For an opaque destination this is out.c = enc(lerp(dec(dst.c), dec(src.c), α)).
+// Coverage becomes α through a CoverageCurve (image/coverage_curve.cpp); without one the curve
+// is the identity, whose entries i/255.0f are the very floats `coverage / 255.0f` gives, so the
+// curve-less functions are these with the identity, bit for bit.
 #include <algorithm>
 #include <array>
 
@@ -65,21 +68,23 @@ namespace {
 // The result of blending `color` at each coverage onto one destination colour: text is mostly
 // drawn onto untouched background, so most pixels are a lookup here instead of six table reads
 // and a division. One per thread (blend functions may run on several threads at once), rebuilt
-// when the pair changes.
+// when the pair or the curve changes.
 struct CoverageLut {
     Rgba8 dst{0, 0, 0, 0}, color{0, 0, 0, 0};
+    CoverageCurve curve;
     bool valid = false;
     std::array<Rgba8, 256> out;
 };
 
-const CoverageLut& coverage_lut(Rgba8 dst, Rgba8 color, const SrgbTables& t, const float src[3]) {
+const CoverageLut& coverage_lut(Rgba8 dst, Rgba8 color, const CoverageCurve& curve,
+                                const SrgbTables& t, const float src[3]) {
     thread_local CoverageLut lut;
-    if (lut.valid && lut.dst == dst && lut.color == color) return lut;
+    if (lut.valid && lut.dst == dst && lut.color == color && lut.curve.same_as(curve)) return lut;
     const float color_a = color.a / 255.0f;
     for (int cov = 0; cov < 256; ++cov) {
         Rgba8 d = dst;
         if (cov > 0) {
-            float a = cov / 255.0f * color_a;
+            float a = curve[static_cast<std::uint8_t>(cov)] * color_a;
             const float alpha[3] = {a, a, a};
             if (cov == 255 && color.a == 255) d = color;
             else blend_pixel(t, d, src, alpha, a);
@@ -88,20 +93,31 @@ const CoverageLut& coverage_lut(Rgba8 dst, Rgba8 color, const SrgbTables& t, con
     }
     lut.dst = dst;
     lut.color = color;
+    lut.curve = curve;
     lut.valid = true;
     return lut;
+}
+
+const CoverageCurve& identity_curve() {
+    static const CoverageCurve identity;
+    return identity;
 }
 
 }  // namespace
 
 void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color) {
+    blend_mask(image, mask, x, y, color, identity_curve());
+}
+
+void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color,
+                const CoverageCurve& curve) {
     Clip c = clip(image.width(), image.height(), mask.width, mask.height, x, y);
     if (c.empty() || color.a == 0) return;
     const SrgbTables& t = srgb_tables();
     const float src[3] = {t.decode[color.r], t.decode[color.g], t.decode[color.b]};
     const float color_a = color.a / 255.0f;
     // The colour under the mask's first visible pixel is almost always the page's background.
-    const CoverageLut& lut = coverage_lut(image.row(y + c.y0)[x + c.x0], color, t, src);
+    const CoverageLut& lut = coverage_lut(image.row(y + c.y0)[x + c.x0], color, curve, t, src);
     for (int my = c.y0; my < c.y1; ++my) {
         const std::uint8_t* m = mask.row(my);
         // Indexed from the first visible pixel: `x` may be negative.
@@ -117,7 +133,7 @@ void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color) {
                 *d = color;
                 continue;
             }
-            float a = cov / 255.0f * color_a;
+            float a = curve[cov] * color_a;
             const float alpha[3] = {a, a, a};
             blend_pixel(t, *d, src, alpha, a);
         }
@@ -125,6 +141,11 @@ void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color) {
 }
 
 void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8_t gray) {
+    blend_mask_gray(page, mask, x, y, gray, identity_curve());
+}
+
+void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8_t gray,
+                     const CoverageCurve& curve) {
     if (page.data == nullptr || mask.data == nullptr) return;
     Clip c = clip(page.width, page.height, mask.width, mask.height, x, y);
     if (c.empty()) return;
@@ -134,16 +155,19 @@ void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8
     // pixel, blended at each coverage (the same float steps as blend_pixel's opaque case, so
     // the two functions agree exactly).
     thread_local std::uint8_t lut_dst = 0, lut_gray = 0;
+    thread_local CoverageCurve lut_curve;
     thread_local bool lut_valid = false;
     thread_local std::array<std::uint8_t, 256> lut;
     const std::uint8_t under = page.row(y + c.y0)[x + c.x0];
-    if (!lut_valid || lut_dst != under || lut_gray != gray) {
+    if (!lut_valid || lut_dst != under || lut_gray != gray || !lut_curve.same_as(curve)) {
         const float dl = t.decode[under];
         lut[0] = under;
-        for (int cov = 1; cov < 255; ++cov) lut[cov] = t.enc(dl + (src - dl) * (cov / 255.0f));
+        for (int cov = 1; cov < 255; ++cov)
+            lut[cov] = t.enc(dl + (src - dl) * curve[static_cast<std::uint8_t>(cov)]);
         lut[255] = gray;
         lut_dst = under;
         lut_gray = gray;
+        lut_curve = curve;
         lut_valid = true;
     }
     for (int my = c.y0; my < c.y1; ++my) {
@@ -158,13 +182,18 @@ void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8
                 *d = gray;
             } else {
                 const float dl = t.decode[*d];
-                *d = t.enc(dl + (src - dl) * (cov / 255.0f));
+                *d = t.enc(dl + (src - dl) * curve[cov]);
             }
         }
     }
 }
 
 void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, LcdOrder order) {
+    blend_lcd_mask(image, mask, x, y, color, order, identity_curve());
+}
+
+void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, LcdOrder order,
+                    const CoverageCurve& curve) {
     Clip c = clip(image.width(), image.height(), mask.width / 3, mask.height, x, y);
     if (c.empty() || color.a == 0) return;
     const SrgbTables& t = srgb_tables();
@@ -179,8 +208,8 @@ void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color,
             const std::uint8_t* p = m + 3 * mx;
             std::uint8_t cr = p[r_at], cg = p[1], cb = p[b_at];
             if ((cr | cg | cb) == 0) continue;
-            const float alpha[3] = {cr / 255.0f * color_a, cg / 255.0f * color_a,
-                                    cb / 255.0f * color_a};
+            const float alpha[3] = {curve[cr] * color_a, curve[cg] * color_a,
+                                    curve[cb] * color_a};
             // The alpha channel takes the strongest subpixel: the pixel is at least that covered.
             float a = std::max({alpha[0], alpha[1], alpha[2]});
             blend_pixel(t, *d, src, alpha, a);

@@ -178,16 +178,18 @@ Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOpti
     // text is blended only onto an opaque page.
     if (options.format == CoverageFormat::Lcd && options.background.a != 255)
         return Error{"render: LCD coverage needs an opaque background (alpha 255)"};
+    auto curve = coverage_curve(options.foreground, options.background, options.coverage);
+    if (!curve) return curve.error();
     Image out;
     auto drawn = draw<Image>(
         utf8, options, out, [&](int w, int h) { return Image(w, h, options.background); },
         [&](Image& onto, ConstMaskView mask, int x, int y) {
             if (options.format == CoverageFormat::Gray)
-                blend_mask(onto, mask, x, y, options.foreground);
+                blend_mask(onto, mask, x, y, options.foreground, *curve);
             else
                 // LCD coverage is stored R, G, B per pixel whatever the panel's order (a BGR
                 // panel's samples are reversed by the fill), so the bytes are RGB here.
-                blend_lcd_mask(onto, mask, x, y, options.foreground, LcdOrder::Rgb);
+                blend_lcd_mask(onto, mask, x, y, options.foreground, LcdOrder::Rgb, *curve);
         });
     if (!drawn) return drawn.error();
     return out;
@@ -213,6 +215,8 @@ Status TextRenderer::draw_gray(std::string_view utf8, const TextRenderOptions& o
     if (!(fg.r == fg.g && fg.g == fg.b && bg.r == bg.g && bg.g == bg.b && fg.a == 255 &&
           bg.a == 255))
         return Error{"render_gray: needs opaque gray foreground and background colours"};
+    auto curve = coverage_curve(fg, bg, options.coverage);
+    if (!curve) return curve.error();
     return draw<Mask>(
         utf8, options, page,
         [&](int w, int h) {
@@ -221,7 +225,7 @@ Status TextRenderer::draw_gray(std::string_view utf8, const TextRenderOptions& o
             return fresh;
         },
         [&](Mask& onto, ConstMaskView mask, int x, int y) {
-            blend_mask_gray(onto.view(), mask, x, y, fg.r);
+            blend_mask_gray(onto.view(), mask, x, y, fg.r, *curve);
         },
         rows_sink);
 }
