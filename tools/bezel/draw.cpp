@@ -1,14 +1,9 @@
 #include "draw.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include "bezel/image.hpp"
 #include "bezel/raster.hpp"
@@ -43,7 +38,8 @@ void stroke_polyline(const std::vector<Point>& pts, double hw, Polylines& out) {
     }
 }
 
-Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h) {
+Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h,
+                              const PngOptions& png) {
     Rasterizer raster;
     std::vector<Mask> masks;
     for (const InkLayer& layer : layers) {
@@ -61,20 +57,9 @@ Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h)
             out.at(x, y) = static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - ink)));
         }
 
-    // write_png_gray writes files: go through a private temporary one, return its bytes.
-    std::string tmpl = (std::filesystem::temp_directory_path() / "bezel-picture-XXXXXX.png").string();
-    int fd = ::mkstemps(tmpl.data(), 4);
-    if (fd < 0) return Error{"cannot create a temporary file for the PNG"};
-    ::close(fd);
-    auto st = write_png_gray(tmpl, out.view());
-    std::string bytes;
-    if (st) {
-        std::ifstream in(tmpl, std::ios::binary);
-        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
-    std::filesystem::remove(tmpl);
-    if (!st) return st.error();
-    return bytes;
+    auto bytes = encode_png_gray(out.view(), png);
+    if (!bytes) return bytes.error();
+    return std::string(bytes->begin(), bytes->end());
 }
 
 }  // namespace bezel::cli

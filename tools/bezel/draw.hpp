@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bezel/expected.hpp"
+#include "bezel/image.hpp"
 #include "bezel/flatten.hpp"
 
 namespace bezel::cli {
@@ -42,6 +43,7 @@ struct InkLayer {
 // Fills every layer into a w×h mask, inks each pixel with the darkest layer (max of ink ×
 // coverage) on white paper, and returns the PNG file's bytes. Errors come from the rasterizer
 // or from writing the PNG.
-Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h);
+Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h,
+                              const PngOptions& png);
 
 }  // namespace bezel::cli

@@ -21,6 +21,7 @@ constexpr int kMaxFillDim = 8192;
 enum class FillFormat { Png, Pgm, Ascii };
 
 struct FillArgs {
+    PngOptions png;  // --compression
     std::string path_data, format, output_file, fill = "nonzero", transform, overlap = "accumulate";
     int width = 0, height = 0;
     double tolerance_px = kDefaultRasterTolerancePx;
@@ -89,7 +90,7 @@ int run_fill(const FillArgs& args) {
     std::string document;
     switch (*format) {
         case FillFormat::Png: {
-            auto png = encode_png_gray(mask.view());
+            auto png = encode_png_gray(mask.view(), args.png);
             if (!png) return fail_runtime(png.error().message);
             document.assign(png->begin(), png->end());
             break;
@@ -135,6 +136,7 @@ Command add_fill_command(CLI::App& app) {
                     "resolved exactly)")
         ->capture_default_str()
         ->check(CLI::IsMember({"accumulate", "accurate"}));
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_fill(*args); }};
 }
 

@@ -18,6 +18,7 @@ namespace {
 enum class GlyphFormat { Ascii, Json, Png, Pnm };
 
 struct GlyphArgs {
+    PngOptions png;  // --compression
     FontArgs font;
     GlyphChoice which;
     std::string format, output_file;
@@ -121,7 +122,7 @@ int run_glyph(const GlyphArgs& args) {
         case GlyphFormat::Json: document = glyphs_json(glyphs, options); break;
         case GlyphFormat::Png:
         case GlyphFormat::Pnm: {
-            auto picture = *format == GlyphFormat::Png ? glyphs_png(glyphs) : glyphs_pnm(glyphs);
+            auto picture = *format == GlyphFormat::Png ? glyphs_png(glyphs, args.png) : glyphs_pnm(glyphs);
             if (!picture) return fail_runtime(font->file() + ": " + picture.error().message);
             document = std::move(*picture);
             break;
@@ -174,6 +175,7 @@ Command add_glyph_command(CLI::App& app) {
                     "auto (accurate for glyphs marked as overlapping) or accurate (for all)")
         ->capture_default_str()
         ->check(CLI::IsMember({"auto", "accurate"}));
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_glyph(*args); }};
 }
 

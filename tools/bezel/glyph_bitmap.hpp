@@ -57,7 +57,7 @@ std::string glyphs_json(const std::vector<GlyphBitmap>& glyphs, const GlyphRende
 // All glyphs side by side, left to right, one empty column apart, top rows aligned on a common
 // baseline; coverage as is (0 black = empty, 255 white = covered). LCD modes give an RGB image.
 // An error when every glyph is empty (no image of 0 × 0 exists).
-Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs);
+Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs, const PngOptions& png);
 // The same picture as binary PGM (P5), or PPM (P6) for LCD modes.
 Expected<std::string> glyphs_pnm(const std::vector<GlyphBitmap>& glyphs);
 

@@ -11,6 +11,7 @@ namespace bezel::cli {
 namespace {
 
 struct IntersectArgs {
+    PngOptions png;  // --compression
     std::string path_a, path_b;  // SVG path data
     std::string format;          // -O
     std::string output_file;     // -o
@@ -57,7 +58,7 @@ int run_intersect(const IntersectArgs& args) {
         case IntersectFormat::Json: document = format_intersect_json(report); break;
         case IntersectFormat::Svg: document = format_intersect_svg(report); break;
         case IntersectFormat::Png: {
-            auto png = format_intersect_png(report);
+            auto png = format_intersect_png(report, args.png);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);
             break;
@@ -88,6 +89,7 @@ Command add_intersect_command(CLI::App& app) {
     cmd->add_option("-o,--output-file", args->output_file,
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_intersect(*args); }};
 }
 

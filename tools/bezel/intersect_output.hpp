@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bezel/expected.hpp"
+#include "bezel/image.hpp"
 #include "bezel/intersect.hpp"
 #include "bezel/path.hpp"
 
@@ -32,6 +33,6 @@ std::string format_intersect_svg(const IntersectReport& r);
 // The same picture as an 8-bit gray PNG, kIntersectPngSizePx on its longer side, black on
 // white (A black, B mid-gray, points as rings). Returns the file's bytes.
 inline constexpr int kIntersectPngSizePx = 512;
-Expected<std::string> format_intersect_png(const IntersectReport& r);
+Expected<std::string> format_intersect_png(const IntersectReport& r, const PngOptions& png);
 
 }  // namespace bezel::cli

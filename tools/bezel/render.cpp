@@ -56,6 +56,7 @@ struct RenderArgs {
     double stroke_px = 0;       // --stroke: outlined text this wide; 0 = filled glyphs
     std::string format;         // -O
     std::string output_file;    // -o
+    PngOptions png;             // --compression
     CLI::App* cmd = nullptr;
 };
 
@@ -226,21 +227,22 @@ int run_render(RenderArgs& args) {
                       bg->r == bg->g && bg->g == bg->b;
     const bool alpha = fg->a != 255 || bg->a != 255;
     const std::string destination = args.output_file.empty() ? "<stdout>" : args.output_file;
-    Expected<std::string> bytes = std::string();
+    Expected<FileBytes> bytes = FileBytes();
     if (gray && !alpha && args.stroke_px == 0 &&
         (*format == PageFormat::Png || *format == PageFormat::Pgm)) {
         // Gray text to a gray file: the page is one byte per pixel from the start (the same
         // bytes the RGBA page would give after conversion, a quarter of the memory).
-        bytes = render_gray_page(*renderer, text, options, *format, destination);
+        bytes = render_gray_page(*renderer, text, options, *format, args.png, destination);
     } else {
         auto page = args.stroke_px > 0 ? render_outlined(*renderer, text, options, args.stroke_px)
                                        : renderer->render(text, options);
         if (!page) return fail_runtime(page.error().message);
-        bytes = encode_page(*page, *format, gray && !alpha, alpha, columns);
+        bytes = encode_page(*page, *format, gray && !alpha, alpha, columns, args.png);
         if (!bytes) return fail_runtime(destination + ": " + bytes.error().message);
     }
     if (!bytes) return fail_runtime(bytes.error().message);
-    return write_result(args.output_file, *bytes);
+    return write_result(args.output_file, std::string_view(reinterpret_cast<const char*>(bytes->data()),
+                                                           bytes->size()));
 }
 
 }  // namespace
@@ -308,6 +310,7 @@ Command add_render_command(CLI::App& app) {
     cmd->add_option("-o,--output-file", args->output_file,
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_render(*args); }};
 }
 

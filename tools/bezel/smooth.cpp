@@ -16,6 +16,7 @@ namespace {
 constexpr const char* kSmoothCommand = "bezel smooth";
 
 struct SmoothArgs {
+    PngOptions png;  // --compression
     std::string method;             // --method
     std::string points;             // --points
     std::string points_file;        // --points-file
@@ -128,7 +129,7 @@ int run_smooth(const SmoothArgs& args) {
         case SmoothFormat::Path: document = format_smooth_path(report); break;
         case SmoothFormat::Svg: document = format_smooth_svg(report); break;
         case SmoothFormat::Png: {
-            auto png = format_smooth_png(report);
+            auto png = format_smooth_png(report, args.png);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);
             break;
@@ -196,6 +197,7 @@ Command add_smooth_command(CLI::App& app) {
     cmd->add_option("-o,--output-file", args->output_file,
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_smooth(*args); }};
 }
 

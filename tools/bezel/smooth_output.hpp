@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bezel/expected.hpp"
+#include "bezel/image.hpp"
 #include "bezel/path.hpp"
 #include "bezel/smooth.hpp"
 
@@ -60,7 +61,7 @@ std::string format_smooth_svg(const SmoothReport& r);
 // rasterizer: result black, input polygon mid-gray, handles light gray, points dark dots.
 // Returns the file's bytes.
 inline constexpr int kSmoothPngSizePx = 512;
-Expected<std::string> format_smooth_png(const SmoothReport& r);
+Expected<std::string> format_smooth_png(const SmoothReport& r, const PngOptions& png);
 
 // `bezel continuity`: one line per joint, or the JSON
 //   {"tolerance": t, "joints": [{"contour": c, "incoming": i, "outgoing": j, "point": [x, y],

@@ -21,6 +21,7 @@ namespace {
 constexpr const char* kStrokeCommand = "bezel stroke";
 
 struct StrokeArgs {
+    PngOptions png;  // --compression
     std::string path;         // PATH (SVG path data)
     std::string path_file;    // --path-file
     double width = 1;         // --width
@@ -166,7 +167,7 @@ int run_stroke(const StrokeArgs& args) {
         case StrokeFormat::Path: document = to_svg_path(*outline) + "\n"; break;
         case StrokeFormat::Svg: document = format_stroke_svg(*path, *outline, *style); break;
         case StrokeFormat::Png: {
-            auto png = format_stroke_png(*outline, *frame);
+            auto png = format_stroke_png(*outline, *frame, args.png);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);
             break;
@@ -232,6 +233,7 @@ Command add_stroke_command(CLI::App& app) {
     cmd->add_option("-o,--output-file", args->output_file,
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_stroke(*args); }};
 }
 

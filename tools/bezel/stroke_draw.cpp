@@ -51,7 +51,8 @@ std::string format_stroke_svg(const Path& source, const Path& outline, const Str
     return s.str();
 }
 
-Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& frame) {
+Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& frame,
+                                        const PngOptions& png) {
     Path mapped = outline.transformed(frame.transform);
     if (!mapped.is_finite()) return Error{"--transform: the mapped outline is not finite"};
     Affine to_canvas;
@@ -76,7 +77,7 @@ Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& fra
     if (!st) return st.error();
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) mask.at(x, y) = static_cast<std::uint8_t>(255 - mask.at(x, y));
-    auto bytes = encode_png_gray(mask.view());
+    auto bytes = encode_png_gray(mask.view(), png);
     if (!bytes) return bytes.error();
     return std::string(bytes->begin(), bytes->end());
 }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "bezel/expected.hpp"
+#include "bezel/image.hpp"
 #include "bezel/geometry.hpp"
 #include "bezel/path.hpp"
 #include "bezel/stroke.hpp"
@@ -27,6 +28,7 @@ std::string format_stroke_svg(const Path& source, const Path& outline, const Str
 
 // Black ink on white, 8-bit gray PNG bytes; the outline filled NonZero with overlaps resolved
 // exactly (OverlapMode::Accurate: the outline's pieces overlap by design).
-Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& frame);
+Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& frame,
+                                        const PngOptions& png);
 
 }  // namespace bezel::cli

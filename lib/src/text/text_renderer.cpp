@@ -6,7 +6,6 @@
 // baseline row and horizontal stems stay crisp.
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <string>
 #include <utility>
 #include <vector>
@@ -191,11 +190,8 @@ Status TextRenderer::draw_gray(std::string_view utf8, const TextRenderOptions& o
         return Error{"render_gray: needs opaque gray foreground and background colours"};
     return draw<Mask>(
         utf8, options, page,
-        [&](int w, int h) {
-            Mask fresh(w, h);
-            if (bg.r != 0) std::memset(fresh.view().data, bg.r, fresh.pixels().size());
-            return fresh;
-        },
+        // The paper's byte written once (a zeroed page then filled would write it twice).
+        [&](int w, int h) { return Mask(w, h, bg.r); },
         [&](Mask& onto, ConstMaskView mask, int x, int y) {
             blend_mask_gray(onto.view(), mask, x, y, fg.r);
         },
