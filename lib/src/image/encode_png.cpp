@@ -1,7 +1,7 @@
 // PNG encoding of colour images and masks into memory through libpng's low-level API, which (unlike
 // the simplified png_image API png.cpp uses for reading) lets us pick the zlib level and filter.
 //
-// Fast and Default: zlib level 1, Small: level 8 (image.hpp); never a row filter (no per-row
+// Fast and Default: zlib level 1, Small: level 6 (image.hpp); never a row filter (no per-row
 // filter search). Measured on the benchmark page (tools/bench/render_page.txt, 716×2361 gray): no filter encodes faster than
 // SUB and gives a smaller file (266 KB against 285 KB: the flat background is long runs of one
 // byte either way, and SUB turns glyph edges into more distinct values); Z_RLE was larger
