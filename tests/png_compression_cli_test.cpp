@@ -68,8 +68,7 @@ TEST(PngCompressionCli, OtherCommandsAcceptEveryLevel) {
         for (const std::string& level : kLevels) {
             auto args = base;
             const std::string file = base[0] + "-" + level + ".png";
-            for (const std::string& a : {std::string("--compression"), level, std::string("-o"), file})
-                args.push_back(a);
+            args.insert(args.end(), {"--compression", level, "-o", file});
             auto run = run_bezel(args, dir.path());
             ASSERT_EQ(run.exit_code, 0) << base[0] << " " << level << ": " << run.err;
             auto png = read_png_gray((dir.path() / file).string());

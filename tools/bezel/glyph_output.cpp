@@ -164,12 +164,14 @@ std::string glyphs_json(const std::vector<GlyphBitmap>& glyphs, const GlyphRende
     return arr.dump(2) + "\n";
 }
 
-Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs, const PngOptions& png_options) {
+Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs,
+                                 const PngOptions& png_options) {
     Layout l;
     const int bpp = picture_bpp(glyphs);
     auto px = compose(glyphs, l, bpp);
     if (!px) return px.error();
-    auto png = bpp == 1 ? encode_png_gray(ConstMaskView{px->data(), l.width, l.height, l.width}, png_options)
+    auto png = bpp == 1 ? encode_png_gray(ConstMaskView{px->data(), l.width, l.height, l.width},
+                                          png_options)
                         : encode_png(rgb_image(*px, l.width, l.height), PngColor::Rgb, png_options);
     if (!png) return png.error();
     return std::string(png->begin(), png->end());

@@ -241,8 +241,8 @@ int run_render(RenderArgs& args) {
         if (!bytes) return fail_runtime(destination + ": " + bytes.error().message);
     }
     if (!bytes) return fail_runtime(bytes.error().message);
-    return write_result(args.output_file, std::string_view(reinterpret_cast<const char*>(bytes->data()),
-                                                           bytes->size()));
+    return write_result(args.output_file,
+                        std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()));
 }
 
 }  // namespace

@@ -32,8 +32,8 @@
 
 #include <algorithm>
 #include <condition_variable>
-#include <memory>
 #include <cstring>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <system_error>
@@ -99,9 +99,10 @@ public:
         // The scanlines as the stream holds them (filter byte 0, then the pixels), from the
         // first row of the history (Default) to the band's end.
         const std::size_t row_bytes = static_cast<std::size_t>(mask.width) + 1;
+        const std::size_t history_rows_wanted = (kHistoryBytes + row_bytes - 1) / row_bytes;
         const int history_rows =
-            prime_ ? static_cast<int>(std::min<std::size_t>(
-                         static_cast<std::size_t>(band.y0), (kHistoryBytes + row_bytes - 1) / row_bytes))
+            prime_ ? static_cast<int>(
+                         std::min(static_cast<std::size_t>(band.y0), history_rows_wanted))
                    : 0;
         const int from = band.y0 - history_rows;
         raw_.reserve_discarding(static_cast<std::size_t>(band.y1 - from) * row_bytes);
@@ -219,7 +220,8 @@ PngGrayStream::PngGrayStream(ConstMaskView page, int workers, const PngOptions& 
     Impl& s = *impl_;
     s.page = page;
     s.options = options;
-    s.banded = options.compression != PngCompression::Small && page.data != nullptr && page.width > 0 && page.width <= kMaxImageDim &&
+    s.banded = options.compression != PngCompression::Small && page.data != nullptr &&
+               page.width > 0 && page.width <= kMaxImageDim &&
                page.height >= 2 * kPngBandRows && page.height <= kMaxImageDim;
     if (!s.banded) return;
     const int n = (page.height + kPngBandRows - 1) / kPngBandRows;
@@ -310,7 +312,8 @@ Expected<std::vector<std::uint8_t>> PngGrayStream::Impl::assemble() {
         o.push_back(0x78);  // deflate, 32 KiB window
         // FLEVEL (informative): fastest (0x01) or fast (0x5E); (0x78·256 + FLG) % 31 == 0.
         o.push_back(options.compression == PngCompression::Fast ? 0x01 : 0x5E);
-        for (const Band& b : bands) o.insert(o.end(), b.deflated.data.get(), b.deflated.data.get() + b.deflated.size);
+        for (const Band& b : bands)
+            o.insert(o.end(), b.deflated.data.get(), b.deflated.data.get() + b.deflated.size);
         put32(o, static_cast<std::uint32_t>(adler));
     });
     chunk(out, "IEND", [](std::vector<std::uint8_t>&) {});
