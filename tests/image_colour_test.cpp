@@ -242,29 +242,40 @@ TEST(EncodePng, GrayOnSeveralThreadsDecodesToTheSamePixels) {
                                                             : (x * y) % 13 == 0 ? 0 : 255;
         }
     const ConstMaskView view(buf.data(), W, H, stride);
-    auto single = encode_png_gray(view);
-    ASSERT_TRUE(single);
-    for (int threads : {1, 2, 3, 8, 64}) {
-        auto png = encode_png_gray(view, threads);
-        ASSERT_TRUE(png) << png.error().message;
-        if (threads > 1) {
-            EXPECT_NE(*png, *single) << threads;  // the banded writer ran
+    // Every compression level; Default's bands reach back into the rows of earlier bands (a
+    // 32 KiB history is ~200 of these rows, three bands).
+    std::vector<std::size_t> banded_size;
+    for (PngCompression level :
+         {PngCompression::Fast, PngCompression::Default, PngCompression::Small}) {
+        const PngOptions options{level};
+        auto single = encode_png_gray(view, options);
+        ASSERT_TRUE(single);
+        for (int threads : {1, 2, 3, 8, 64}) {
+            auto png = encode_png_gray(view, threads, options);
+            ASSERT_TRUE(png) << png.error().message;
+            if (threads > 1 && level != PngCompression::Small) {
+                EXPECT_NE(*png, *single) << threads;  // the banded writer ran
+            }
+            if (threads == 2) banded_size.push_back(png->size());
+            const std::string file = temp_file("threads.png");
+            std::FILE* f = std::fopen(file.c_str(), "wb");
+            ASSERT_NE(f, nullptr);
+            std::fwrite(png->data(), 1, png->size(), f);
+            std::fclose(f);
+            auto back = read_png_gray(file);
+            std::remove(file.c_str());
+            ASSERT_TRUE(back) << threads << ": " << back.error().message;
+            ASSERT_EQ(back->width(), W);
+            ASSERT_EQ(back->height(), H);
+            int wrong = 0;
+            for (int y = 0; y < H; ++y)
+                for (int x = 0; x < W; ++x) wrong += back->at(x, y) != buf[y * stride + x];
+            EXPECT_EQ(wrong, 0) << threads << " threads, level " << static_cast<int>(level);
         }
-        const std::string file = temp_file("threads.png");
-        std::FILE* f = std::fopen(file.c_str(), "wb");
-        ASSERT_NE(f, nullptr);
-        std::fwrite(png->data(), 1, png->size(), f);
-        std::fclose(f);
-        auto back = read_png_gray(file);
-        std::remove(file.c_str());
-        ASSERT_TRUE(back) << threads << ": " << back.error().message;
-        ASSERT_EQ(back->width(), W);
-        ASSERT_EQ(back->height(), H);
-        int wrong = 0;
-        for (int y = 0; y < H; ++y)
-            for (int x = 0; x < W; ++x) wrong += back->at(x, y) != buf[y * stride + x];
-        EXPECT_EQ(wrong, 0) << threads << " threads";
     }
+    ASSERT_EQ(banded_size.size(), 3u);
+    EXPECT_LT(banded_size[1], banded_size[0]) << "Default no smaller than Fast";
+    EXPECT_LT(banded_size[2], banded_size[1]) << "Small no smaller than Default";
     // Too few rows to split, and bad masks: the one-thread writer's result and errors.
     const ConstMaskView short_view(buf.data(), W, 100, stride);
     EXPECT_EQ(*encode_png_gray(short_view, 4), *encode_png_gray(short_view));

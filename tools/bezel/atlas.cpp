@@ -36,6 +36,7 @@ constexpr double kDefaultAtlasSizePx = 32.0;
 constexpr std::size_t kMaxAtlasChars = 1u << 16;
 
 struct AtlasArgs {
+    PngOptions png;  // --compression
     FontArgs font;
     std::string chars;
     std::string output_file;   // -o: the PNG
@@ -127,7 +128,7 @@ int run_atlas(AtlasArgs& args) {
                                   {"padding", kAtlasPaddingPx},
                                   {"glyphs", std::move(glyphs)}};
 
-    auto png = encode_png_gray(texture.view());
+    auto png = encode_png_gray(texture.view(), args.png);
     if (!png) return fail_runtime(args.output_file + ": " + png.error().message);
     // The JSON is written last: a toolkit that sees it can rely on the texture beside it.
     auto written = write_output(args.output_file, std::string(png->begin(), png->end()));
@@ -165,6 +166,7 @@ Command add_atlas_command(CLI::App& app) {
     cmd->add_option("--json", args->json_file, "The metrics as JSON (default: stdout)")
         ->type_name("FILE");
     add_strict_option(*cmd, args->strict);
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_atlas(*args); }};
 }
 

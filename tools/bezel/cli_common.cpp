@@ -2,6 +2,8 @@
 
 #include "bezel/text.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -200,6 +202,19 @@ Status write_output(const std::string& output_file, std::string_view data) {
 int write_result(const std::string& output_file, std::string_view data) {
     auto written = write_output(output_file, data);
     return written ? kExitOk : fail_runtime(written.error().message);
+}
+
+void add_compression_option(CLI::App& cmd, PngOptions& png) {
+    cmd.add_option_function<std::string>(
+           "--compression",
+           [&png](const std::string& level) {
+               png.compression = level == "fast"    ? PngCompression::Fast
+                                 : level == "small" ? PngCompression::Small
+                                                    : PngCompression::Default;
+           },
+           "How hard to deflate PNG: same pixels, time against file size (default: default)")
+        ->type_name("LEVEL")
+        ->check(CLI::IsMember({"fast", "default", "small"}));
 }
 
 }  // namespace bezel::cli

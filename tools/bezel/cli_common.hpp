@@ -19,6 +19,11 @@
 #include <vector>
 
 #include "bezel/expected.hpp"
+#include "bezel/image.hpp"
+
+namespace CLI {
+class App;
+}
 
 namespace bezel::cli {
 
@@ -92,6 +97,11 @@ Expected<std::string> pick_output_format(const std::string& format_option,
 // name is an Error.
 Expected<OutputFormat> choose_format(const std::string& format_option,
                                      const std::string& output_file, OutputFormat fallback);
+
+// --compression fast|default|small on a command that writes PNG, into `png` (bezel/image.hpp's
+// PngCompression says what each level trades; the default is `default`). A value not among them
+// is a usage error (exit 2) that lists them.
+void add_compression_option(CLI::App& cmd, PngOptions& png);
 
 // Writes `data` to stdout when `output_file` is empty or "-", else atomically to `output_file`
 // (temporary file `<output_file>.tmp-XXXXXX` in the same directory, then rename). The error

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <functional>
+#include <string_view>
 #include <vector>
 
 namespace CLI { class App; }
@@ -19,7 +20,10 @@ struct Command {
     std::function<int()> run;    // returns the process exit code (see cli_common.hpp)
 };
 
-// Adds every subcommand to `app`, in the order `bezel --help` lists them.
-std::vector<Command> add_all_commands(CLI::App& app);
+// Adds every subcommand to `app`, in the order `bezel --help` lists them; or, when `only` is the
+// name of one, just that one: building every command's options is a quarter of a one-letter
+// `bezel render`'s instructions, and a command line names its command first. The registry's
+// names are those the commands give themselves (tested).
+std::vector<Command> add_all_commands(CLI::App& app, const char* only = nullptr);
 
 }  // namespace bezel::cli

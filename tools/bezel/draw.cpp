@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "bezel/image.hpp"
 #include "bezel/raster.hpp"
@@ -38,7 +39,8 @@ void stroke_polyline(const std::vector<Point>& pts, double hw, Polylines& out) {
 }
 
 Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h,
-                              const PictureColours& colours) {
+                              const PictureColours& colours,
+                              const PngOptions& png) {
     Rasterizer raster;
     std::vector<Mask> masks;
     for (const InkLayer& layer : layers) {
@@ -55,7 +57,7 @@ Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h,
                 ink = std::max(ink, layers[i].ink * masks[i].at(x, y) / 255.0);
             out.at(x, y) = paint(colours, ink);
         }
-    return picture_png(out, colours.gray(), colours.translucent());
+    return picture_png(out, colours.gray(), colours.translucent(), png);
 }
 
 }  // namespace bezel::cli

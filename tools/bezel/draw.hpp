@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bezel/expected.hpp"
+#include "bezel/image.hpp"
 #include "bezel/flatten.hpp"
 #include "picture.hpp"
 
@@ -44,6 +45,7 @@ struct InkLayer {
 // coverage) in `colours` (picture.hpp: black on white, a gray PNG, by default), and returns the
 // PNG file's bytes. Errors come from the rasterizer or from encoding the PNG.
 Expected<std::string> ink_png(const std::vector<InkLayer>& layers, int w, int h,
-                              const PictureColours& colours);
+                              const PictureColours& colours,
+                              const PngOptions& png);
 
 }  // namespace bezel::cli

@@ -22,6 +22,7 @@ constexpr int kMaxFillDim = 8192;
 enum class FillFormat { Png, Pgm, Ascii };
 
 struct FillArgs {
+    PngOptions png;  // --compression
     std::string path_data, format, output_file, fill = "nonzero", transform, overlap = "accumulate";
     std::string foreground, background;   // picture colours ("": black on white)
     bool coverage = false;                // --coverage: the coverage itself, not a picture
@@ -96,7 +97,7 @@ int run_fill(const FillArgs& args) {
         const std::vector<std::uint8_t> pgm = encode_pgm(mask.view());
         document.assign(pgm.begin(), pgm.end());
     } else if (args.coverage) {
-        auto png = encode_png_gray(mask.view());
+        auto png = encode_png_gray(mask.view(), args.png);
         if (!png) return fail_runtime(png.error().message);
         document.assign(png->begin(), png->end());
     } else {
@@ -109,7 +110,7 @@ int run_fill(const FillArgs& args) {
         if (*format == FillFormat::Pgm) {
             document = picture_pnm(picture, true);
         } else {
-            auto png = picture_png(picture, colours->gray(), colours->translucent());
+            auto png = picture_png(picture, colours->gray(), colours->translucent(), args.png);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);
         }
@@ -154,6 +155,7 @@ Command add_fill_command(CLI::App& app) {
                   "PNG/PGM of the coverage itself (gray, 255 = covered) instead of a picture")
         ->excludes("--foreground")
         ->excludes("--background");
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_fill(*args); }};
 }
 

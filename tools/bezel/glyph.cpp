@@ -19,6 +19,7 @@ namespace {
 enum class GlyphFormat { Ascii, Json, Png, Pnm };
 
 struct GlyphArgs {
+    PngOptions png;  // --compression
     FontArgs font;
     GlyphChoice which;
     std::string format, output_file;
@@ -136,7 +137,7 @@ int run_glyph(GlyphArgs& args) {
                 if (!parsed) return fail_usage(parsed.error().message, kGlyphCommand);
                 colours = *parsed;
             }
-            auto picture = *format == GlyphFormat::Png ? glyphs_png(glyphs, colours)
+            auto picture = *format == GlyphFormat::Png ? glyphs_png(glyphs, colours, args.png)
                                                        : glyphs_pnm(glyphs, colours);
             if (!picture) return fail_runtime(font->file() + ": " + picture.error().message);
             document = std::move(*picture);
@@ -199,6 +200,7 @@ Command add_glyph_command(CLI::App& app) {
                   "covered) instead of a picture")
         ->excludes("--foreground")
         ->excludes("--background");
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_glyph(*args); }};
 }
 

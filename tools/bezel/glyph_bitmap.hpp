@@ -61,7 +61,8 @@ std::string glyphs_json(const std::vector<GlyphBitmap>& glyphs, const GlyphRende
 // other colours an RGB one (RGBA for translucent colours). An error when every glyph is empty
 // (no image of 0 × 0 exists).
 Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs,
-                                 const std::optional<PictureColours>& colours);
+                                 const std::optional<PictureColours>& colours,
+                                 const PngOptions& png);
 // The same picture as binary PGM (P5) when gray, else PPM (P6).
 Expected<std::string> glyphs_pnm(const std::vector<GlyphBitmap>& glyphs,
                                  const std::optional<PictureColours>& colours);

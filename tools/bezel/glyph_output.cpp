@@ -168,21 +168,22 @@ std::string glyphs_json(const std::vector<GlyphBitmap>& glyphs, const GlyphRende
 }
 
 Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs,
-                                 const std::optional<PictureColours>& colours) {
+                                 const std::optional<PictureColours>& colours,
+                                 const PngOptions& png_options) {
     Layout l;
     const int bpp = picture_bpp(glyphs);
     auto px = compose(glyphs, l, bpp);
     if (!px) return px.error();
     const ConstMaskView gray{px->data(), l.width, l.height, l.width};
     if (!colours) {
-        auto png = bpp == 1 ? encode_png_gray(gray)
-                            : encode_png(rgb_image(*px, l.width, l.height, colours), PngColor::Rgb);
+        auto png = bpp == 1 ? encode_png_gray(gray, png_options)
+                            : encode_png(rgb_image(*px, l.width, l.height, colours), PngColor::Rgb, png_options);
         if (!png) return png.error();
         return std::string(png->begin(), png->end());
     }
     const Image picture = bpp == 1 ? paint_coverage(gray, *colours)
                                    : rgb_image(*px, l.width, l.height, colours);
-    return picture_png(picture, bpp == 1 && colours->gray(), colours->translucent());
+    return picture_png(picture, bpp == 1 && colours->gray(), colours->translucent(), png_options);
 }
 
 Expected<std::string> glyphs_pnm(const std::vector<GlyphBitmap>& glyphs,

@@ -12,6 +12,7 @@ namespace bezel::cli {
 namespace {
 
 struct IntersectArgs {
+    PngOptions png;  // --compression
     std::string path_a, path_b;  // SVG path data
     std::string format;          // -O
     std::string output_file;     // -o
@@ -61,7 +62,7 @@ int run_intersect(const IntersectArgs& args) {
         case IntersectFormat::Png: {
             auto colours = picture_colours(args.foreground, args.background);
             if (!colours) return fail_usage(colours.error().message, command);
-            auto png = format_intersect_png(report, *colours);
+            auto png = format_intersect_png(report, *colours, args.png);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);
             break;
@@ -93,6 +94,7 @@ Command add_intersect_command(CLI::App& app) {
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
     add_colour_options(*cmd, args->foreground, args->background);
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_intersect(*args); }};
 }
 

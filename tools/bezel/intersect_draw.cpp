@@ -135,7 +135,8 @@ std::string format_intersect_svg(const IntersectReport& r) {
     return s.str();
 }
 
-Expected<std::string> format_intersect_png(const IntersectReport& r, const PictureColours& colours) {
+Expected<std::string> format_intersect_png(const IntersectReport& r, const PictureColours& colours,
+                                           const PngOptions& png) {
     Rect box = frame_of(r);
     double size = std::max(box.width(), box.height());
     double scale = kIntersectPngSizePx / size;
@@ -151,7 +152,7 @@ Expected<std::string> format_intersect_png(const IntersectReport& r, const Pictu
                     4.0, lo);
     for (const PathIntersection& p : r.result.intersections) ring(m * p.point, 5.0, 3.5, lm);
     // Ink: A black, B mid-gray, overlap bands light gray, rings black; white paper.
-    return ink_png({{&la, 1.0}, {&lb, 0.55}, {&lo, 0.3}, {&lm, 1.0}}, w, h, colours);
+    return ink_png({{&la, 1.0}, {&lb, 0.55}, {&lo, 0.3}, {&lm, 1.0}}, w, h, colours, png);
 }
 
 }  // namespace bezel::cli

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bezel/expected.hpp"
+#include "bezel/image.hpp"
 #include "bezel/intersect.hpp"
 #include "bezel/path.hpp"
 #include "picture.hpp"
@@ -34,6 +35,7 @@ std::string format_intersect_svg(const IntersectReport& r);
 // paper (picture.hpp; black on white, an 8-bit gray PNG, by default): A full ink, B mid, points
 // as rings. Returns the file's bytes.
 inline constexpr int kIntersectPngSizePx = 512;
-Expected<std::string> format_intersect_png(const IntersectReport& r, const PictureColours& colours);
+Expected<std::string> format_intersect_png(const IntersectReport& r, const PictureColours& colours,
+                                  const PngOptions& png);
 
 }  // namespace bezel::cli

@@ -77,7 +77,7 @@ int run_cli(int argc, char** argv) {
     app.footer(
         "Exit status: 0 success, 1 runtime error (unreadable font, bad glyph, unwritable "
         "output), 2 usage error.\nRun 'bezel <command> --help' for a command's options.");
-    std::vector<Command> commands = add_all_commands(app);
+    std::vector<Command> commands = add_all_commands(app, argc > 1 ? argv[1] : nullptr);
 
     // Every command gets a last, hidden positional that takes whatever arguments are left over,
     // reported below as a usage error. Besides naming the stray argument, it keeps an EMPTY

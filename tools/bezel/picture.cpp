@@ -70,8 +70,10 @@ Image paint_coverage(ConstMaskView coverage, const PictureColours& colours) {
     return out;
 }
 
-Expected<std::string> picture_png(const Image& picture, bool gray, bool alpha) {
-    auto png = encode_png(picture, gray ? PngColor::Gray : alpha ? PngColor::Rgba : PngColor::Rgb);
+Expected<std::string> picture_png(const Image& picture, bool gray, bool alpha,
+                                  const PngOptions& png_options) {
+    auto png = encode_png(picture, gray ? PngColor::Gray : alpha ? PngColor::Rgba : PngColor::Rgb,
+                          png_options);
     if (!png) return png.error();
     return std::string(png->begin(), png->end());
 }

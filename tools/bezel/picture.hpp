@@ -44,7 +44,8 @@ Image paint_coverage(ConstMaskView coverage, const PictureColours& colours);
 
 // A painted picture as PNG: gray when `gray` (every pixel has r = g = b and opaque), RGBA when
 // `alpha`, RGB otherwise.
-Expected<std::string> picture_png(const Image& picture, bool gray, bool alpha);
+Expected<std::string> picture_png(const Image& picture, bool gray, bool alpha,
+                                  const PngOptions& png);
 // As binary PGM when `gray`, else PPM (alpha dropped: PNM has none).
 std::string picture_pnm(const Image& picture, bool gray);
 

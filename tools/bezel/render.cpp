@@ -62,6 +62,7 @@ struct RenderArgs {
     std::string format;         // -O
     std::string output_file;    // -o
     bool strict = false;        // --strict
+    PngOptions png;             // --compression
     CLI::App* cmd = nullptr;
 };
 
@@ -272,19 +273,19 @@ int run_render(RenderArgs& args) {
                       bg->r == bg->g && bg->g == bg->b;
     const bool alpha = fg->a != 255 || bg->a != 255;
     const std::string destination = args.output_file.empty() ? "<stdout>" : args.output_file;
-    Expected<std::string> bytes = std::string();
+    Expected<FileBytes> bytes = FileBytes();
     MissingGlyphs outlined_missing;
     if (gray && !alpha && args.stroke_px == 0 &&
         (*format == PageFormat::Png || *format == PageFormat::Pgm)) {
         // Gray text to a gray file: the page is one byte per pixel from the start (the same
         // bytes the RGBA page would give after conversion, a quarter of the memory).
-        bytes = render_gray_page(*renderer, text, options, *format, destination);
+        bytes = render_gray_page(*renderer, text, options, *format, args.png, destination);
     } else {
         auto page = args.stroke_px > 0
                         ? render_outlined(*renderer, text, options, args.stroke_px, outlined_missing)
                         : renderer->render(text, options);
         if (!page) return fail_runtime(page.error().message);
-        bytes = encode_page(*page, *format, gray && !alpha, alpha, columns);
+        bytes = encode_page(*page, *format, gray && !alpha, alpha, columns, args.png);
         if (!bytes) return fail_runtime(destination + ": " + bytes.error().message);
     }
     if (!bytes) return fail_runtime(bytes.error().message);
@@ -292,7 +293,8 @@ int run_render(RenderArgs& args) {
         args.stroke_px > 0 ? outlined_missing : renderer->missing_glyphs();
     if (Status s = report_missing_glyphs(renderer->font().file(), missing, args.strict); !s)
         return fail_runtime(s.error().message);
-    return write_result(args.output_file, *bytes);
+    return write_result(args.output_file,
+                        std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()));
 }
 
 }  // namespace
@@ -387,6 +389,7 @@ Command add_render_command(CLI::App& app) {
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
     add_strict_option(*cmd, args->strict);
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_render(*args); }};
 }
 

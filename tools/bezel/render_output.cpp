@@ -14,18 +14,18 @@ namespace bezel::cli {
 
 namespace {
 
-std::string bytes_of(const std::vector<std::uint8_t>& v) { return std::string(v.begin(), v.end()); }
-
 // A gray page and the PNG stream deflating its finished rows. The stream starts at the first
 // finished rows, when the page has its size; it is declared after `page`, so it is destroyed
 // (its workers joined) first.
 struct PngBands final : PageRowsSink {
-    explicit PngBands(int worker_count) : workers(worker_count) {}
+    PngBands(int worker_count, const PngOptions& png_options)
+        : workers(worker_count), options(png_options) {}
     void rows_final(int rows) override {
-        if (!png) png.emplace(page.view(), workers);
+        if (!png) png.emplace(page.view(), workers, options);
         png->rows_final(rows);
     }
     int workers;
+    PngOptions options;
     Mask page;
     std::optional<PngGrayStream> png;
 };
@@ -61,39 +61,40 @@ int terminal_columns() {
     return 80;
 }
 
-Expected<std::string> encode_page(const Image& page, PageFormat format, bool gray_ok,
-                                  bool has_alpha, int ansi_columns) {
+Expected<FileBytes> encode_page(const Image& page, PageFormat format, bool gray_ok,
+                                  bool has_alpha, int ansi_columns, const PngOptions& png_options) {
     switch (format) {
-        case PageFormat::Pgm: return bytes_of(encode_pgm(page));
-        case PageFormat::Ppm: return bytes_of(encode_ppm(page));
-        case PageFormat::Ansi: return encode_ansi(page, ansi_columns);
+        case PageFormat::Pgm: return encode_pgm(page);
+        case PageFormat::Ppm: return encode_ppm(page);
+        case PageFormat::Ansi: {
+            const std::string ansi = encode_ansi(page, ansi_columns);
+            return FileBytes(ansi.begin(), ansi.end());
+        }
         case PageFormat::Png: break;
     }
     PngColor color = has_alpha ? PngColor::Rgba : gray_ok ? PngColor::Gray : PngColor::Rgb;
-    auto png = encode_png(page, color);
-    if (!png) return png.error();
-    return bytes_of(*png);
+    return encode_png(page, color, png_options);
 }
 
-Expected<std::string> render_gray_page(TextRenderer& renderer, std::string_view text,
+Expected<FileBytes> render_gray_page(TextRenderer& renderer, std::string_view text,
                                        const TextRenderOptions& options, PageFormat format,
-                                       const std::string& destination) {
+                                       const PngOptions& png, const std::string& destination) {
     if (format != PageFormat::Png && format != PageFormat::Pgm)
         return Error{"a gray page is written as PNG or PGM only"};
     if (format == PageFormat::Pgm) {
         auto page = renderer.render_gray(text, options);
         if (!page) return page.error();
-        return bytes_of(encode_pgm(page->view()));
+        return encode_pgm(page->view());
     }
     // Deflating is the largest part of `bezel render`'s time on a page of text, so the PNG's
     // bands are deflated by workers on the other cores (at least one) while this thread draws
     // the lines below them, then by all of them.
-    PngBands bands(static_cast<int>(std::max(2u, std::thread::hardware_concurrency()) - 1));
+    PngBands bands(static_cast<int>(std::max(2u, std::thread::hardware_concurrency()) - 1), png);
     if (auto drawn = renderer.render_gray_streaming(text, options, bands.page, bands); !drawn)
         return drawn.error();
     auto encoded = bands.png->finish();  // the sink's last call, with the page height, made `png`
     if (!encoded) return Error{destination + ": " + encoded.error().message};
-    return bytes_of(*encoded);
+    return encoded;
 }
 
 }  // namespace bezel::cli

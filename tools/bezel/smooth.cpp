@@ -18,6 +18,7 @@ namespace {
 constexpr const char* kSmoothCommand = "bezel smooth";
 
 struct SmoothArgs {
+    PngOptions png;  // --compression
     std::string method;             // --method
     std::string points;             // --points
     std::string points_file;        // --points-file
@@ -133,7 +134,7 @@ int run_smooth(const SmoothArgs& args) {
         case SmoothFormat::Png: {
             auto colours = picture_colours(args.foreground, args.background);
             if (!colours) return fail_usage(colours.error().message, kSmoothCommand);
-            auto png = format_smooth_png(report, *colours);
+            auto png = format_smooth_png(report, *colours, args.png);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);
             break;
@@ -202,6 +203,7 @@ Command add_smooth_command(CLI::App& app) {
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
     add_colour_options(*cmd, args->foreground, args->background);
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_smooth(*args); }};
 }
 

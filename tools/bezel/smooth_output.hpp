@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bezel/expected.hpp"
+#include "bezel/image.hpp"
 #include "bezel/path.hpp"
 #include "bezel/smooth.hpp"
 #include "picture.hpp"
@@ -61,7 +62,8 @@ std::string format_smooth_svg(const SmoothReport& r);
 // shades of the ink on the paper (picture.hpp; black on white, an 8-bit gray PNG, by default):
 // result full ink, input polygon mid, handles light, points dark dots. Returns the file's bytes.
 inline constexpr int kSmoothPngSizePx = 512;
-Expected<std::string> format_smooth_png(const SmoothReport& r, const PictureColours& colours);
+Expected<std::string> format_smooth_png(const SmoothReport& r, const PictureColours& colours,
+                                  const PngOptions& png);
 
 // `bezel continuity`: one line per joint, or the JSON
 //   {"tolerance": t, "joints": [{"contour": c, "incoming": i, "outgoing": j, "point": [x, y],

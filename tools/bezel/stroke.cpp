@@ -22,6 +22,7 @@ namespace {
 constexpr const char* kStrokeCommand = "bezel stroke";
 
 struct StrokeArgs {
+    PngOptions png;  // --compression
     std::string path;         // PATH (SVG path data)
     std::string path_file;    // --path-file
     double width = 1;         // --width
@@ -170,7 +171,7 @@ int run_stroke(const StrokeArgs& args) {
         case StrokeFormat::Png: {
             auto colours = picture_colours(args.foreground, args.background);
             if (!colours) return fail_usage(colours.error().message, kStrokeCommand);
-            auto png = format_stroke_png(*outline, *frame, *colours);
+            auto png = format_stroke_png(*outline, *frame, *colours, args.png);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);
             break;
@@ -237,6 +238,7 @@ Command add_stroke_command(CLI::App& app) {
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
     add_colour_options(*cmd, args->foreground, args->background);
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_stroke(*args); }};
 }
 

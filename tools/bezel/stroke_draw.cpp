@@ -52,7 +52,8 @@ std::string format_stroke_svg(const Path& source, const Path& outline, const Str
 }
 
 Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& frame,
-                                        const PictureColours& colours) {
+                                        const PictureColours& colours,
+                                        const PngOptions& png) {
     Path mapped = outline.transformed(frame.transform);
     if (!mapped.is_finite()) return Error{"--transform: the mapped outline is not finite"};
     Affine to_canvas;
@@ -75,7 +76,7 @@ Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& fra
     auto st = raster.fill_path(mapped, to_canvas, mask.view(),
                                {FillRule::NonZero, OverlapMode::Accurate});
     if (!st) return st.error();
-    return picture_png(paint_coverage(mask.view(), colours), colours.gray(), colours.translucent());
+    return picture_png(paint_coverage(mask.view(), colours), colours.gray(), colours.translucent(), png);
 }
 
 }  // namespace bezel::cli

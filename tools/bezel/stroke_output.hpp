@@ -5,6 +5,7 @@
 #include <string>
 
 #include "bezel/expected.hpp"
+#include "bezel/image.hpp"
 #include "bezel/geometry.hpp"
 #include "bezel/path.hpp"
 #include "bezel/stroke.hpp"
@@ -30,6 +31,7 @@ std::string format_stroke_svg(const Path& source, const Path& outline, const Str
 // outline's pieces overlap by design), painted in `colours` (picture.hpp: black on white by
 // default, then an 8-bit gray PNG), as PNG bytes.
 Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& frame,
-                                        const PictureColours& colours);
+                                        const PictureColours& colours,
+                                        const PngOptions& png);
 
 }  // namespace bezel::cli

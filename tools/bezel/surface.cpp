@@ -18,6 +18,7 @@ namespace {
 constexpr const char* kSurfaceCommand = "bezel surface";
 
 struct SurfaceArgs {
+    PngOptions png;  // --compression
     std::string patch_file;            // --patch
     std::string basis;                 // --basis
     std::string view = "-35,25";       // --view az,el
@@ -165,7 +166,7 @@ int run_surface(const SurfaceArgs& args) {
             image = render_solid(*mesh, *view, style);
         }
         if (!image) return fail_runtime(args.patch_file + ": " + image.error().message);
-        auto png = encode_png(*image, PngColor::Rgb);
+        auto png = encode_png(*image, PngColor::Rgb, args.png);
         if (!png) return fail_runtime(png.error().message);
         document.assign(png->begin(), png->end());
     }
@@ -240,6 +241,7 @@ Command add_surface_command(CLI::App& app) {
     cmd->add_option("-o,--output-file", args->output_file,
                     "Write here instead of stdout (atomically: no partial file on failure)")
         ->type_name("FILE");
+    add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_surface(*args); }};
 }
 

@@ -70,11 +70,11 @@ struct FloatMaskView {
 class Mask {
 public:
     Mask() = default;
-    // A zeroed mask. Precondition: 0 ≤ width, height ≤ kMaxImageDim (checked by the callers that
-    // take sizes from input, e.g. read_png_gray).
-    Mask(int width, int height)
+    // A mask of `fill` (zeroed by default), written once. Precondition: 0 ≤ width, height ≤
+    // kMaxImageDim (checked by the callers that take sizes from input, e.g. read_png_gray).
+    Mask(int width, int height, std::uint8_t fill = 0)
         : width_(width), height_(height),
-          pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0) {}
+          pixels_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), fill) {}
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -241,22 +241,44 @@ void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8
 
 // PNG colour layouts for writing.
 enum class PngColor : std::uint8_t { Gray, Rgb, Rgba };
+
+// How hard the PNG writers deflate: every level writes the same pixels (no row filter; PNG
+// viewers see no difference), they differ in time and file size. Rows are never filtered: on
+// text pages (long runs of the paper's byte) filtering made files larger at every level.
+//   Fast:    libpng writer: zlib level 1. Banded gray writer: igzip level 1, each 64-row band
+//            deflated with an empty history (the cheapest deflate there is here; largest file).
+//   Default: libpng writer: zlib level 1 (zlib's next levels cost several times the time).
+//            Banded gray writer: igzip level 2, each band primed with the 32 KiB of scanlines
+//            above it (a deflate window's worth), so bands find their matches in the lines
+//            above as one stream would: on a page of text ~14 % smaller than Fast for ~25 %
+//            more deflate time, still spread over the threads.
+//   Small:   zlib level 6 (zlib's and libpng's default), one stream on the calling thread, for
+//            both writers (the banded writer falls back to libpng). Levels 7-9 made text pages
+//            at most 2 % smaller for 1.2-14x the time.
+enum class PngCompression : std::uint8_t { Fast, Default, Small };
+struct PngOptions {
+    PngCompression compression = PngCompression::Default;
+};
+
 // Writes `image` as PNG in `color` (Gray: luma of the sRGB values, Rec. 709 weights; alpha
-// dropped unless Rgba). Fast compression (zlib level 1, no filtering search) by default; errors
-// name the file.
-Status write_png(const std::string& file, const Image& image, PngColor color = PngColor::Rgba);
+// dropped unless Rgba); errors name the file.
+Status write_png(const std::string& file, const Image& image, PngColor color = PngColor::Rgba,
+                 const PngOptions& options = {});
 // PNG bytes in memory (for stdout and atomic writes).
-Expected<std::vector<std::uint8_t>> encode_png(const Image& image, PngColor color);
-Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask);
-// The same image, deflated on up to `threads` threads (at most kMaxPngThreads; 1 or fewer, or a
-// mask under 2·kPngBandRows rows, is the call above): the rows are cut into bands of
-// kPngBandRows, each band deflated on its own and ended on a byte boundary (a sync flush), and
-// the pieces joined into one zlib stream, as pigz does. A valid PNG that decodes to the same
-// pixels; its bytes do not depend on `threads` (> 1), and it is a little larger than the
-// one-thread file (each band starts with an empty history). Errors as encode_png_gray.
+Expected<std::vector<std::uint8_t>> encode_png(const Image& image, PngColor color,
+                                               const PngOptions& options = {});
+Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask,
+                                                    const PngOptions& options = {});
+// The same image, deflated on up to `threads` threads (at most kMaxPngThreads; 1 or fewer, a
+// mask under 2·kPngBandRows rows, or PngCompression::Small, is the call above): the rows are
+// cut into bands of kPngBandRows, each band deflated on its own by igzip and ended on a byte
+// boundary (a sync flush), and the pieces joined into one zlib stream, as pigz does. A valid
+// PNG that decodes to the same pixels; its bytes do not depend on `threads` (> 1). Errors as
+// encode_png_gray.
 inline constexpr int kMaxPngThreads = 8;
 inline constexpr int kPngBandRows = 64;
-Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask, int threads);
+Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask, int threads,
+                                                    const PngOptions& options = {});
 
 // The banded gray PNG writer above, fed while the page is still being drawn: bands are deflated
 // on `workers` threads (0..kMaxPngThreads; a thread the system refuses is one fewer) as soon as
@@ -265,10 +287,11 @@ Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask, int thre
 // Contract: `page` stays valid until finish() returns or the stream is destroyed; once rows
 // [0, n) are declared final the caller no longer writes them (other rows it may write at any
 // time: the workers read only final rows). The result equals encode_png_gray(page, threads)
-// for any threads > 1. One stream encodes one page; it is not itself shared between threads.
+// for any threads > 1 and the same options. One stream encodes one page; it is not itself
+// shared between threads. With PngCompression::Small nothing is deflated before finish().
 class PngGrayStream {
 public:
-    PngGrayStream(ConstMaskView page, int workers);
+    PngGrayStream(ConstMaskView page, int workers, const PngOptions& options = {});
     ~PngGrayStream();  // stops and joins the workers (after an abandoned page, too)
     PngGrayStream(const PngGrayStream&) = delete;
     PngGrayStream& operator=(const PngGrayStream&) = delete;

@@ -1,8 +1,8 @@
 // PNG encoding of colour images and masks into memory through libpng's low-level API, which (unlike
 // the simplified png_image API png.cpp uses for reading) lets us pick the zlib level and filter.
 //
-// Speed over size: zlib level 1 and no filter (no per-row filter search). Measured on the
-// benchmark page (tools/bench/render_page.txt, 716×2361 gray): no filter encodes faster than
+// Fast and Default: zlib level 1, Small: level 6 (image.hpp); never a row filter (no per-row
+// filter search). Measured on the benchmark page (tools/bench/render_page.txt, 716×2361 gray): no filter encodes faster than
 // SUB and gives a smaller file (266 KB against 285 KB: the flat background is long runs of one
 // byte either way, and SUB turns glyph edges into more distinct values); Z_RLE was larger
 // (548 KB) and no faster.
@@ -28,7 +28,9 @@ namespace bezel {
 
 namespace {
 
-constexpr int kZlibLevel = 1;
+int zlib_level(PngCompression compression) {
+    return compression == PngCompression::Small ? 6 : 1;
+}
 
 struct WriteState {
     std::vector<std::uint8_t>* out;
@@ -59,7 +61,7 @@ using RowFn = const std::uint8_t* (*)(const void* source, int y, std::uint8_t* s
 
 // Returns false with st.message set on failure. See the file comment on setjmp.
 bool encode_rows(WriteState& st, int width, int height, int color_type, const void* source,
-                 RowFn row_fn, std::uint8_t* scratch) {
+                 RowFn row_fn, std::uint8_t* scratch, int level) {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &st, on_error, on_warning);
     if (!png) {
         std::snprintf(st.message, sizeof st.message, "cannot create the libpng writer");
@@ -76,7 +78,7 @@ bool encode_rows(WriteState& st, int width, int height, int color_type, const vo
         return false;
     }
     png_set_write_fn(png, &st, on_write, on_flush);
-    png_set_compression_level(png, kZlibLevel);
+    png_set_compression_level(png, level);
     png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
     png_set_IHDR(png, info, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height), 8,
                  color_type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
@@ -123,7 +125,7 @@ Status check_size(int width, int height) {
 
 Expected<std::vector<std::uint8_t>> encode(int width, int height, int color_type,
                                            const void* source, RowFn row_fn,
-                                           std::size_t scratch_bytes) {
+                                           std::size_t scratch_bytes, PngCompression compression) {
     if (auto ok = check_size(width, height); !ok) return ok.error();
     std::vector<std::uint8_t> out;
     // Text pages compress to about 1/6 of a byte per pixel at level 1: reserving that much (and
@@ -131,34 +133,40 @@ Expected<std::vector<std::uint8_t>> encode(int width, int height, int color_type
     out.reserve(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) / 4 + 4096);
     std::vector<std::uint8_t> scratch(scratch_bytes);
     WriteState st{&out, {}};
-    if (!encode_rows(st, width, height, color_type, source, row_fn, scratch.data()))
+    if (!encode_rows(st, width, height, color_type, source, row_fn, scratch.data(),
+                     zlib_level(compression)))
         return Error{std::string("PNG encoding failed: ") + st.message};
     return out;
 }
 
 }  // namespace
 
-Expected<std::vector<std::uint8_t>> encode_png(const Image& image, PngColor color) {
+Expected<std::vector<std::uint8_t>> encode_png(const Image& image, PngColor color,
+                                               const PngOptions& options) {
+    const PngCompression c = options.compression;
     auto w = static_cast<std::size_t>(std::max(image.width(), 0));
     switch (color) {
         case PngColor::Gray:
             return encode(image.width(), image.height(), PNG_COLOR_TYPE_GRAY, &image,
-                          image_gray_row, w);
+                          image_gray_row, w, c);
         case PngColor::Rgb:
             return encode(image.width(), image.height(), PNG_COLOR_TYPE_RGB, &image,
-                          image_rgb_row, 3 * w);
+                          image_rgb_row, 3 * w, c);
         case PngColor::Rgba:
             break;
     }
-    return encode(image.width(), image.height(), PNG_COLOR_TYPE_RGBA, &image, image_rgba_row, 0);
+    return encode(image.width(), image.height(), PNG_COLOR_TYPE_RGBA, &image, image_rgba_row, 0,
+                  c);
 }
 
-Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask) {
-    return encode(mask.width, mask.height, PNG_COLOR_TYPE_GRAY, &mask, mask_row, 0);
+Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask, const PngOptions& options) {
+    return encode(mask.width, mask.height, PNG_COLOR_TYPE_GRAY, &mask, mask_row, 0,
+                  options.compression);
 }
 
-Status write_png(const std::string& file, const Image& image, PngColor color) {
-    auto bytes = encode_png(image, color);
+Status write_png(const std::string& file, const Image& image, PngColor color,
+                 const PngOptions& options) {
+    auto bytes = encode_png(image, color, options);
     if (!bytes) return Error{file + ": " + bytes.error().message};
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(file.c_str(), "wb"), std::fclose);
     if (!f) return Error{file + ": cannot create file: " + std::strerror(errno)};

@@ -13,23 +13,27 @@
 // but the last ends with a sync flush (a non-final empty stored block, so the next band's blocks
 // start on a byte boundary) and the last with the final block, so their concatenation is one
 // valid deflate stream. The Adler-32s of the bands are joined with zlib's adler32_combine.
+// PngCompression::Default primes each band's deflater with the 32 KiB of scanlines before it
+// (igzip's preset dictionary): a back-reference into them is valid in the joined stream, whose
+// window holds exactly those bytes, and the rows above a band are final when it is queued.
 //
 // Why igzip: on the 716×2361 benchmark page in 64-row bands (one thread), igzip level 1 takes
 // 3.7 ms for 292 795 bytes, where zlib level 1 (libpng's fastest) takes about 11 ms for 299 587
 // bytes (22 M against 61 M instructions).
-// igzip level 0 is faster still (2.5 ms) but 16 % larger.
+// igzip level 0 is faster still (2.5 ms) but 16 % larger. Level 2 primed with the rows above
+// (Default) gives 252 943 bytes for ~25 % more time; level 3 is 5x slower for 2 % less.
 //
 // Why 64-row bands whatever the thread count: a worker can start while a page of text is still
 // drawn (a 16 px line of text is ~19 rows), and the bytes do not depend on the core count. The
-// price is size, since each band starts with an empty history (with zlib: +13 % against one
-// stream; priming each band with the rows above it won most of that back but cost 8–46 % more
-// instructions, and this writer exists for speed).
+// price is size when each band starts with an empty history (Fast: +14 % against one igzip
+// stream), which priming with the rows above (Default) wins back.
 #include <isa-l/igzip_lib.h>
 #include <zlib.h>
 
 #include <algorithm>
 #include <condition_variable>
 #include <cstring>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <system_error>
@@ -43,46 +47,94 @@ namespace bezel {
 // Named (not anonymous): PngGrayStream::Impl, which has external linkage, holds these.
 namespace png_detail {
 
-constexpr int kLevel = 1;  // igzip's levels are 0..3; see above
+// igzip's levels are 0..3; see above.
+int igzip_level(PngCompression c) { return c == PngCompression::Fast ? 1 : 2; }
+std::size_t igzip_level_buf_bytes(PngCompression c) {
+    // The "small" work buffers (16 Ki tokens), since a band is only ~64 rows (same bytes, same
+    // speed as the default sizes).
+    return c == PngCompression::Fast ? ISAL_DEF_LVL1_SMALL : ISAL_DEF_LVL2_SMALL;
+}
+// Default's priming: a deflate window (32 KiB) of the scanlines above the band.
+constexpr std::size_t kHistoryBytes = 32768;
+
+// A byte buffer that is not cleared: the deflaters write every byte they later read, and
+// clearing fresh memory only faults its pages in early (a page's bands hold ~1.7 MB for 0.3 MB
+// of output on a text page).
+struct Bytes {
+    std::unique_ptr<std::uint8_t[]> data;
+    std::size_t size = 0, capacity = 0;
+    void reserve_discarding(std::size_t n) {
+        if (n > capacity) {
+            data.reset(new std::uint8_t[n]);
+            capacity = n;
+        }
+        size = n;
+    }
+    // Keeps the first `keep` bytes, grows to n.
+    void grow(std::size_t keep, std::size_t n) {
+        std::unique_ptr<std::uint8_t[]> bigger(new std::uint8_t[n]);
+        std::memcpy(bigger.get(), data.get(), keep);
+        data = std::move(bigger);
+        capacity = size = n;
+    }
+};
 
 struct Band {
     int y0 = 0, y1 = 0;
-    std::vector<std::uint8_t> deflated;
+    Bytes deflated;
     uLong adler = 0, length = 0;
     bool ok = false;
 };
 
-// One z_stream, reused from band to band (deflateReset keeps its ~300 KB of tables).
-// One igzip level-1 work buffer (hash table and 16 Ki tokens, ~84 KiB), reused from band to
-// band; the "small" size, since a band is only ~64 rows (same bytes, same speed as the default).
+// One igzip work buffer (hash table and 16 Ki tokens, ~84 KiB at level 1) and one scanline
+// buffer, reused from band to band.
 class Deflater {
 public:
-    Deflater() : level_buf_(ISAL_DEF_LVL1_SMALL) {}
+    explicit Deflater(PngCompression c)
+        : level_(igzip_level(c)), prime_(c == PngCompression::Default) {
+        level_buf_.reserve_discarding(igzip_level_buf_bytes(c));
+    }
 
     void run(ConstMaskView mask, bool last, Band& band) {
-        // The band's scanlines as the stream holds them: filter byte 0, then the pixels.
+        // The scanlines as the stream holds them (filter byte 0, then the pixels), from the
+        // first row of the history (Default) to the band's end.
         const std::size_t row_bytes = static_cast<std::size_t>(mask.width) + 1;
-        raw_.resize(static_cast<std::size_t>(band.y1 - band.y0) * row_bytes);
-        for (int y = band.y0; y < band.y1; ++y) {
-            std::uint8_t* r = raw_.data() + static_cast<std::size_t>(y - band.y0) * row_bytes;
+        const std::size_t history_rows_wanted = (kHistoryBytes + row_bytes - 1) / row_bytes;
+        const int history_rows =
+            prime_ ? static_cast<int>(
+                         std::min(static_cast<std::size_t>(band.y0), history_rows_wanted))
+                   : 0;
+        const int from = band.y0 - history_rows;
+        raw_.reserve_discarding(static_cast<std::size_t>(band.y1 - from) * row_bytes);
+        for (int y = from; y < band.y1; ++y) {
+            std::uint8_t* r = raw_.data.get() + static_cast<std::size_t>(y - from) * row_bytes;
             r[0] = 0;
             std::memcpy(r + 1, mask.row(y), static_cast<std::size_t>(mask.width));
         }
-        band.length = raw_.size();
-        band.adler = isal_adler32(1, raw_.data(), raw_.size());
+        const std::size_t history = static_cast<std::size_t>(history_rows) * row_bytes;
+        const std::uint8_t* in = raw_.data.get() + history;
+        const std::size_t in_bytes = raw_.size - history;
+        band.length = in_bytes;
+        band.adler = isal_adler32(1, in, in_bytes);
         // Room for stored blocks (5 bytes per 64 KiB) should nothing compress; grown if not.
-        band.deflated.resize(raw_.size() + raw_.size() / 64 + 64);
+        band.deflated.reserve_discarding(in_bytes + in_bytes / 64 + 64);
         isal_zstream z;
         isal_deflate_init(&z);
-        z.level = kLevel;
-        z.level_buf = level_buf_.data();
-        z.level_buf_size = static_cast<std::uint32_t>(level_buf_.size());
+        z.level = static_cast<std::uint32_t>(level_);
+        z.level_buf = level_buf_.data.get();
+        z.level_buf_size = static_cast<std::uint32_t>(level_buf_.size);
+        if (history > 0) {
+            const std::size_t dict = std::min(history, kHistoryBytes);
+            if (isal_deflate_set_dict(&z, const_cast<std::uint8_t*>(in - dict),
+                                      static_cast<std::uint32_t>(dict)) != COMP_OK)
+                return;
+        }
         z.flush = SYNC_FLUSH;
         z.end_of_stream = last ? 1 : 0;
-        z.next_in = raw_.data();
-        z.avail_in = static_cast<std::uint32_t>(raw_.size());
-        z.next_out = band.deflated.data();
-        z.avail_out = static_cast<std::uint32_t>(band.deflated.size());
+        z.next_in = const_cast<std::uint8_t*>(in);
+        z.avail_in = static_cast<std::uint32_t>(in_bytes);
+        z.next_out = band.deflated.data.get();
+        z.avail_out = static_cast<std::uint32_t>(band.deflated.size);
         for (;;) {
             if (isal_deflate(&z) != COMP_OK) return;
             // Everything is in (and, for the last band, the final block written) once igzip
@@ -90,17 +142,19 @@ public:
             if (z.avail_in == 0 && z.avail_out > 0 &&
                 (!last || z.internal_state.state == ZSTATE_END))
                 break;
-            const std::size_t used = band.deflated.size() - z.avail_out;
-            band.deflated.resize(band.deflated.size() * 2);
-            z.next_out = band.deflated.data() + used;
-            z.avail_out = static_cast<std::uint32_t>(band.deflated.size() - used);
+            const std::size_t used = band.deflated.size - z.avail_out;
+            band.deflated.grow(used, band.deflated.size * 2);
+            z.next_out = band.deflated.data.get() + used;
+            z.avail_out = static_cast<std::uint32_t>(band.deflated.size - used);
         }
-        band.deflated.resize(band.deflated.size() - z.avail_out);
+        band.deflated.size -= z.avail_out;
         band.ok = true;
     }
 
 private:
-    std::vector<std::uint8_t> level_buf_, raw_;
+    int level_;
+    bool prime_;
+    Bytes level_buf_, raw_;
 };
 
 }  // namespace png_detail
@@ -132,6 +186,7 @@ void chunk(std::vector<std::uint8_t>& out, const char type[4], Fill&& fill) {
 // The bands' shared state: bands [0, queued) may be taken, [0, taken) have been.
 struct PngGrayStream::Impl {
     ConstMaskView page;
+    PngOptions options;
     bool banded = false;  // false: finish() is the one-thread libpng writer
     bool finished = false;
     int next_band_end = 0;  // rows_final's fast path: the row count that completes band `queued`
@@ -145,7 +200,7 @@ struct PngGrayStream::Impl {
     // Deflates queued bands until none is left untaken; with `wait`, then sleeps for more
     // until stopped (a worker), else returns (the finishing thread).
     void work(bool wait) {
-        Deflater deflater;
+        Deflater deflater(options.compression);
         std::unique_lock<std::mutex> lock(mutex);
         for (;;) {
             if (wait) wake.wait(lock, [&] { return stop || taken < queued; });
@@ -160,10 +215,13 @@ struct PngGrayStream::Impl {
     Expected<std::vector<std::uint8_t>> assemble();
 };
 
-PngGrayStream::PngGrayStream(ConstMaskView page, int workers) : impl_(std::make_unique<Impl>()) {
+PngGrayStream::PngGrayStream(ConstMaskView page, int workers, const PngOptions& options)
+    : impl_(std::make_unique<Impl>()) {
     Impl& s = *impl_;
     s.page = page;
-    s.banded = page.data != nullptr && page.width > 0 && page.width <= kMaxImageDim &&
+    s.options = options;
+    s.banded = options.compression != PngCompression::Small && page.data != nullptr &&
+               page.width > 0 && page.width <= kMaxImageDim &&
                page.height >= 2 * kPngBandRows && page.height <= kMaxImageDim;
     if (!s.banded) return;
     const int n = (page.height + kPngBandRows - 1) / kPngBandRows;
@@ -211,7 +269,7 @@ Expected<std::vector<std::uint8_t>> PngGrayStream::finish() {
     Impl& s = *impl_;
     if (s.finished) return Error{"PngGrayStream::finish called twice"};
     s.finished = true;
-    if (!s.banded) return encode_png_gray(s.page);  // which also names any problem with the page
+    if (!s.banded) return encode_png_gray(s.page, s.options);  // which also names any problem
     {
         std::lock_guard<std::mutex> lock(s.mutex);
         s.queued = static_cast<int>(s.bands.size());
@@ -237,7 +295,7 @@ Expected<std::vector<std::uint8_t>> PngGrayStream::Impl::assemble() {
         if (!bands[k].ok) return Error{"PNG encoding failed: zlib could not deflate the image"};
         if (k > 0)
             adler = adler32_combine(adler, bands[k].adler, static_cast<z_off_t>(bands[k].length));
-        total += bands[k].deflated.size();
+        total += bands[k].deflated.size;
     }
 
     std::vector<std::uint8_t> out;
@@ -252,17 +310,20 @@ Expected<std::vector<std::uint8_t>> PngGrayStream::Impl::assemble() {
     });
     chunk(out, "IDAT", [&](std::vector<std::uint8_t>& o) {
         o.push_back(0x78);  // deflate, 32 KiB window
-        o.push_back(0x01);  // fastest level; (0x78·256 + 0x01) % 31 == 0
-        for (const Band& b : bands) o.insert(o.end(), b.deflated.begin(), b.deflated.end());
+        // FLEVEL (informative): fastest (0x01) or fast (0x5E); (0x78·256 + FLG) % 31 == 0.
+        o.push_back(options.compression == PngCompression::Fast ? 0x01 : 0x5E);
+        for (const Band& b : bands)
+            o.insert(o.end(), b.deflated.data.get(), b.deflated.data.get() + b.deflated.size);
         put32(o, static_cast<std::uint32_t>(adler));
     });
     chunk(out, "IEND", [](std::vector<std::uint8_t>&) {});
     return out;
 }
 
-Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask, int threads) {
-    if (threads <= 1) return encode_png_gray(mask);
-    PngGrayStream stream(mask, std::min(threads, kMaxPngThreads) - 1);
+Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask, int threads,
+                                                    const PngOptions& options) {
+    if (threads <= 1) return encode_png_gray(mask, options);
+    PngGrayStream stream(mask, std::min(threads, kMaxPngThreads) - 1, options);
     return stream.finish();
 }
 

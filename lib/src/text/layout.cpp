@@ -320,6 +320,9 @@ Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
     }
 
     TextLayout out;
+    // Most scripts give about one glyph per code point: one allocation for a page instead of a
+    // doubling series (whose copies each fault in fresh memory).
+    out.glyphs.reserve(cps.size());
     std::vector<bool> rtl_line;
     ParagraphLayout paragraph(shaper, shape, utf8, cps);
     for (std::size_t p = 0;;) {

@@ -219,11 +219,8 @@ Status TextRenderer::draw_gray(std::string_view utf8, const TextRenderOptions& o
     if (!curve) return curve.error();
     return draw<Mask>(
         utf8, options, page,
-        [&](int w, int h) {
-            Mask fresh(w, h);
-            if (bg.r != 0) std::memset(fresh.view().data, bg.r, fresh.pixels().size());
-            return fresh;
-        },
+        // The paper's byte written once (a zeroed page then filled would write it twice).
+        [&](int w, int h) { return Mask(w, h, bg.r); },
         [&](Mask& onto, ConstMaskView mask, int x, int y) {
             blend_mask_gray(onto.view(), mask, x, y, fg.r, *curve);
         },
