@@ -124,6 +124,41 @@ TEST_F(ConventionsCli, GlyphPictureColoursArePaintedExactly) {
     EXPECT_TRUE(paper);
 }
 
+// A binary PGM's width, height and pixels.
+struct Pgm {
+    int w = 0, h = 0;
+    std::string px;
+};
+Pgm parse_pgm(const std::string& bytes) {
+    Pgm p;
+    int maxval = 0, consumed = 0;
+    if (std::sscanf(bytes.c_str(), "P5 %d %d %d%n", &p.w, &p.h, &maxval, &consumed) != 3) return p;
+    p.px = bytes.substr(static_cast<std::size_t>(consumed) + 1);
+    return p;
+}
+
+TEST_F(ConventionsCli, GlyphMarginSurroundsTheSamePictureWithPaper) {
+    CliRun plain = run({"glyph", kDejaVu, "--text", "Ag", "--font-size", "20", "-O", "pgm"});
+    CliRun framed = run({"glyph", kDejaVu, "--text", "Ag", "--font-size", "20", "--margin", "3",
+                         "-O", "pgm"});
+    ASSERT_EQ(plain.exit_code, 0) << plain.err;
+    ASSERT_EQ(framed.exit_code, 0) << framed.err;
+    const Pgm a = parse_pgm(plain.out), b = parse_pgm(framed.out);
+    ASSERT_EQ(b.w, a.w + 6);
+    ASSERT_EQ(b.h, a.h + 6);
+    ASSERT_EQ(b.px.size(), std::size_t(b.w) * std::size_t(b.h));
+    for (int y = 0; y < b.h; ++y)
+        for (int x = 0; x < b.w; ++x) {
+            const char v = b.px[std::size_t(y) * b.w + x];
+            const bool inside = x >= 3 && x < 3 + a.w && y >= 3 && y < 3 + a.h;
+            const char want = inside ? a.px[std::size_t(y - 3) * a.w + (x - 3)] : '\xff';
+            ASSERT_EQ(v, want) << x << "," << y;
+        }
+    CliRun bad = run({"glyph", "g", "--margin", "5000", "-o", file("g.png")});
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("--margin: 5000 is not in 0 to 4096"), std::string::npos) << bad.err;
+}
+
 TEST_F(ConventionsCli, CoverageIsAskedForByName) {
     // fill and glyph: --coverage is the coverage itself, 0 = empty, 255 = covered.
     CliRun fill = run({"fill", "M0,0 h4 v4 h-4 z", "--width", "8", "--height", "8", "--coverage", "-o", file("c.png")});

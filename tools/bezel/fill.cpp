@@ -110,7 +110,8 @@ int run_fill(const FillArgs& args) {
         if (*format == FillFormat::Pgm) {
             document = picture_pnm(picture, true);
         } else {
-            auto png = picture_png(picture, colours->gray(), colours->translucent(), args.png);
+            auto png =
+                picture_png(picture, colours->gray(), colours->translucent(), args.png);
             if (!png) return fail_runtime(png.error().message);
             document = std::move(*png);
         }

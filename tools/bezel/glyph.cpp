@@ -11,6 +11,7 @@
 #include "font_args.hpp"
 #include "glyph_bitmap.hpp"
 #include "glyph_choice.hpp"
+#include "parse_check.hpp"
 #include "missing_glyphs.hpp"
 
 namespace bezel::cli {
@@ -29,6 +30,7 @@ struct GlyphArgs {
     bool strict = false;   // --strict
     std::string foreground, background;   // picture colours ("": black on white)
     bool coverage = false;                // --coverage: PNG/PGM of the coverage itself
+    int margin_px = 0;                    // --margin
 };
 
 const std::string kGlyphCommand = "bezel glyph";
@@ -131,14 +133,16 @@ int run_glyph(GlyphArgs& args) {
         case GlyphFormat::Json: document = glyphs_json(glyphs, options); break;
         case GlyphFormat::Png:
         case GlyphFormat::Pnm: {
-            std::optional<PictureColours> colours;
+            GlyphPictureOptions picture_options;
+            picture_options.margin_px = args.margin_px;
+            picture_options.png = args.png;
             if (!args.coverage) {
                 auto parsed = picture_colours(args.foreground, args.background);
                 if (!parsed) return fail_usage(parsed.error().message, kGlyphCommand);
-                colours = *parsed;
+                picture_options.colours = *parsed;
             }
-            auto picture = *format == GlyphFormat::Png ? glyphs_png(glyphs, colours, args.png)
-                                                       : glyphs_pnm(glyphs, colours);
+            auto picture = *format == GlyphFormat::Png ? glyphs_png(glyphs, picture_options)
+                                                       : glyphs_pnm(glyphs, picture_options);
             if (!picture) return fail_runtime(font->file() + ": " + picture.error().message);
             document = std::move(*picture);
             break;
@@ -200,6 +204,10 @@ Command add_glyph_command(CLI::App& app) {
                   "covered) instead of a picture")
         ->excludes("--foreground")
         ->excludes("--background");
+    cmd->add_option("--margin", args->margin_px,
+                    "png/pgm: empty pixels around the glyphs on every side (default 0)")
+        ->type_name("PX")
+        ->check(in_range(0.0, static_cast<double>(kMaxGlyphMarginPx)));
     add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_glyph(*args); }};
 }

@@ -55,16 +55,26 @@ std::string ascii_art(ConstMaskView mask);
 std::string glyphs_ascii(const std::vector<GlyphBitmap>& glyphs, const GlyphRenderOptions& options);
 // The JSON contract: an array, one object per glyph (see the help footer in glyph.cpp).
 std::string glyphs_json(const std::vector<GlyphBitmap>& glyphs, const GlyphRenderOptions& options);
+// How the glyph picture (png, pgm) is drawn.
+struct GlyphPictureOptions {
+    // Ink on paper (picture.hpp), or nullopt for the coverage as is (0 = empty, 255 = covered).
+    std::optional<PictureColours> colours;
+    int margin_px = 0;   // empty pixels around the glyphs on every side, 0..kMaxGlyphMarginPx
+    PngOptions png;
+};
+
+// The widest --margin of a glyph picture: as much as a glyph at the largest font size needs
+// around it, and small enough that margins alone never make a picture too large to encode.
+inline constexpr int kMaxGlyphMarginPx = 4096;
+
 // All glyphs side by side, left to right, one empty column apart, top rows aligned on a common
-// baseline, painted in `colours` (picture.hpp: ink on paper), or without colours the coverage as
-// is (0 = empty, 255 = covered). Gray coverage in gray colours gives a gray PNG; LCD modes or
-// other colours an RGB one (RGBA for translucent colours). An error when every glyph is empty
-// (no image of 0 × 0 exists).
+// baseline, options.margin_px empty pixels around them, painted in options.colours. Gray
+// coverage in gray colours gives a gray PNG; LCD modes or other colours an RGB one (RGBA for
+// translucent colours). An error when every glyph is empty (no image of 0 × 0 exists).
 Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs,
-                                 const std::optional<PictureColours>& colours,
-                                 const PngOptions& png);
+                                 const GlyphPictureOptions& options);
 // The same picture as binary PGM (P5) when gray, else PPM (P6).
 Expected<std::string> glyphs_pnm(const std::vector<GlyphBitmap>& glyphs,
-                                 const std::optional<PictureColours>& colours);
+                                 const GlyphPictureOptions& options);
 
 }  // namespace bezel::cli

@@ -38,7 +38,8 @@ struct Layout {
     std::vector<int> x;
 };
 
-Layout layout(const std::vector<GlyphBitmap>& glyphs) {
+// `margin` empty pixels on every side.
+Layout layout(const std::vector<GlyphBitmap>& glyphs, int margin) {
     Layout l;
     int above = 0, below = 0;
     bool any = false;
@@ -48,20 +49,23 @@ Layout layout(const std::vector<GlyphBitmap>& glyphs) {
         below = any ? std::max(below, g.box.height - g.box.top) : g.box.height - g.box.top;
         any = true;
     }
-    l.baseline = above;
-    l.height = any ? above + below : 0;
+    if (!any) return l;   // no picture: width and height stay 0
+    l.baseline = margin + above;
+    l.height = above + below + 2 * margin;
+    int x = 0;
     for (const GlyphBitmap& g : glyphs) {
-        if (l.width > 0 && g.box.width > 0) l.width += 1;  // one empty column between glyphs
-        l.x.push_back(l.width);
-        l.width += g.box.width;
+        if (x > 0 && g.box.width > 0) x += 1;  // one empty column between glyphs
+        l.x.push_back(margin + x);
+        x += g.box.width;
     }
+    l.width = x + 2 * margin;
     return l;
 }
 
 // Copies every glyph's bytes into one image, `bpp` bytes per pixel, background 0.
 Expected<std::vector<std::uint8_t>> compose(const std::vector<GlyphBitmap>& glyphs, Layout& l,
-                                            int bpp) {
-    l = layout(glyphs);
+                                            int bpp, int margin) {
+    l = layout(glyphs, margin);
     if (l.width == 0 || l.height == 0)
         return Error{"every glyph is empty: there is no picture to write"};
     std::vector<std::uint8_t> px(static_cast<std::size_t>(l.width) * bpp * l.height, 0);
@@ -168,29 +172,33 @@ std::string glyphs_json(const std::vector<GlyphBitmap>& glyphs, const GlyphRende
 }
 
 Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs,
-                                 const std::optional<PictureColours>& colours,
-                                 const PngOptions& png_options) {
+                                 const GlyphPictureOptions& options) {
+    const std::optional<PictureColours>& colours = options.colours;
+    const PngOptions& png_options = options.png;
     Layout l;
     const int bpp = picture_bpp(glyphs);
-    auto px = compose(glyphs, l, bpp);
+    auto px = compose(glyphs, l, bpp, options.margin_px);
     if (!px) return px.error();
     const ConstMaskView gray{px->data(), l.width, l.height, l.width};
     if (!colours) {
         auto png = bpp == 1 ? encode_png_gray(gray, png_options)
-                            : encode_png(rgb_image(*px, l.width, l.height, colours), PngColor::Rgb, png_options);
+                            : encode_png(rgb_image(*px, l.width, l.height, colours),
+                                         PngColor::Rgb, png_options);
         if (!png) return png.error();
         return std::string(png->begin(), png->end());
     }
     const Image picture = bpp == 1 ? paint_coverage(gray, *colours)
                                    : rgb_image(*px, l.width, l.height, colours);
-    return picture_png(picture, bpp == 1 && colours->gray(), colours->translucent(), png_options);
+    return picture_png(picture, bpp == 1 && colours->gray(), colours->translucent(),
+                       png_options);
 }
 
 Expected<std::string> glyphs_pnm(const std::vector<GlyphBitmap>& glyphs,
-                                 const std::optional<PictureColours>& colours) {
+                                 const GlyphPictureOptions& options) {
+    const std::optional<PictureColours>& colours = options.colours;
     Layout l;
     const int bpp = picture_bpp(glyphs);
-    auto px = compose(glyphs, l, bpp);
+    auto px = compose(glyphs, l, bpp, options.margin_px);
     if (!px) return px.error();
     const ConstMaskView gray{px->data(), l.width, l.height, l.width};
     if (!colours) {

@@ -135,7 +135,8 @@ std::string format_intersect_svg(const IntersectReport& r) {
     return s.str();
 }
 
-Expected<std::string> format_intersect_png(const IntersectReport& r, const PictureColours& colours,
+Expected<std::string> format_intersect_png(const IntersectReport& r,
+                                           const PictureColours& colours,
                                            const PngOptions& png) {
     Rect box = frame_of(r);
     double size = std::max(box.width(), box.height());

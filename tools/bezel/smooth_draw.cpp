@@ -122,7 +122,8 @@ std::string format_smooth_svg(const SmoothReport& r) {
     return s.str();
 }
 
-Expected<std::string> format_smooth_png(const SmoothReport& r, const PictureColours& colours,
+Expected<std::string> format_smooth_png(const SmoothReport& r,
+                                        const PictureColours& colours,
                                         const PngOptions& png) {
     Rect box = frame_of(r);
     double size = std::max(box.width(), box.height());
@@ -154,7 +155,8 @@ Expected<std::string> format_smooth_png(const SmoothReport& r, const PictureColo
     for (const Point& p : r.input) disc(m * p, 3.0, dots);
 
     // Ink: curve black, input polygon mid-gray, handles light gray, points dark; white paper.
-    return ink_png({{&curve, 1.0}, {&polygon, 0.45}, {&handle_lines, 0.3}, {&dots, 0.8}}, w, h, colours, png);
+    return ink_png({{&curve, 1.0}, {&polygon, 0.45}, {&handle_lines, 0.3}, {&dots, 0.8}}, w, h,
+                   colours, png);
 }
 
 }  // namespace bezel::cli

@@ -76,7 +76,8 @@ Expected<std::string> format_stroke_png(const Path& outline, const PngFrame& fra
     auto st = raster.fill_path(mapped, to_canvas, mask.view(),
                                {FillRule::NonZero, OverlapMode::Accurate});
     if (!st) return st.error();
-    return picture_png(paint_coverage(mask.view(), colours), colours.gray(), colours.translucent(), png);
+    return picture_png(paint_coverage(mask.view(), colours), colours.gray(), colours.translucent(),
+                       png);
 }
 
 }  // namespace bezel::cli
