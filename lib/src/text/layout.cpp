@@ -229,7 +229,10 @@ Status ParagraphLayout::run(std::size_t begin, std::size_t end, double width_px,
         }
     }
     for (std::size_t k = 0; k < m; ++k) prefix_[k + 1] += prefix_[k];   // now prefix sums
-    if (auto ok = breaker_.line_breaks(chars_.data(), m, breaks_); !ok) return ok;
+    // Without a width no line is wrapped: the opportunities are not needed.
+    if (width_px > 0) {
+        if (auto ok = breaker_.line_breaks(chars_.data(), m, breaks_); !ok) return ok;
+    }
     if (auto ok = wrap(m, width_px); !ok) return ok;
     for (const LineSpan& line : lines_)
         if (auto ok = place_line(line, out); !ok) return ok;

@@ -1,8 +1,13 @@
 // Line breaks and grapheme clusters by ICU's break iterators (layout_breaks.hpp).
 #include "text/layout_breaks.hpp"
 
+#include <dlfcn.h>
 #include <unicode/ubrk.h>
 #include <unicode/utf16.h>
+
+#include <mutex>
+#include <string>
+#include <type_traits>
 
 namespace bezel::text_detail {
 
@@ -13,8 +18,53 @@ bool is_break_space(char32_t c) {
 
 namespace {
 
+// ICU is loaded when text is first broken into lines or clusters, not when bezel starts: mapping
+// libicuuc, its 30 MB data library and the shared C++ runtime it needs costs a process about as
+// much as rendering a short line, and a page that is not wrapped never breaks lines. The
+// functions are ICU's C API of the version bezel was compiled against (their names carry the
+// version, as ICU's headers rename them: ubrk_open is ubrk_open_72).
+#define BEZEL_ICU_NAME2(x) #x
+#define BEZEL_ICU_NAME(x) BEZEL_ICU_NAME2(x)
+
+struct IcuApi {
+    decltype(&ubrk_open) open = nullptr;
+    decltype(&ubrk_close) close = nullptr;
+    decltype(&ubrk_setText) set_text = nullptr;
+    decltype(&ubrk_first) first = nullptr;
+    decltype(&ubrk_next) next = nullptr;
+    decltype(&u_errorName) error_name = nullptr;
+    std::string failure;   // why ICU could not be loaded; empty when it was
+};
+
+const IcuApi& icu() {
+    static IcuApi api;
+    static std::once_flag once;
+    std::call_once(once, [] {
+        const char* library = "libicuuc.so." BEZEL_ICU_NAME(U_ICU_VERSION_MAJOR_NUM);
+        void* handle = dlopen(library, RTLD_NOW | RTLD_LOCAL);
+        if (handle == nullptr) {
+            api.failure = std::string("cannot load ICU (") + library + "), which line breaking needs: " +
+                          dlerror();
+            return;
+        }
+        auto load = [&](auto& fn, const char* name) {
+            fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(dlsym(handle, name));
+            if (fn == nullptr && api.failure.empty())
+                api.failure = std::string(library) + " has no " + name;
+        };
+        load(api.open, BEZEL_ICU_NAME(ubrk_open));
+        load(api.close, BEZEL_ICU_NAME(ubrk_close));
+        load(api.set_text, BEZEL_ICU_NAME(ubrk_setText));
+        load(api.first, BEZEL_ICU_NAME(ubrk_first));
+        load(api.next, BEZEL_ICU_NAME(ubrk_next));
+        load(api.error_name, BEZEL_ICU_NAME(u_errorName));
+        // The library stays loaded for the life of the process: iterators may outlive any caller.
+    });
+    return api;
+}
+
 struct IteratorCloser {
-    void operator()(UBreakIterator* it) const { ubrk_close(it); }
+    void operator()(UBreakIterator* it) const { icu().close(it); }
 };
 using Iterator = std::unique_ptr<UBreakIterator, IteratorCloser>;
 
@@ -28,11 +78,13 @@ struct UnicodeBreaks::Impl {
     // Opens `it` of `type` on first use (the root locale: UAX #14 / #29's defaults).
     Status open(Iterator& it, UBreakIteratorType type) {
         if (it) return ok_status();
+        const IcuApi& api = icu();
+        if (!api.failure.empty()) return Error{api.failure};
         UErrorCode status = U_ZERO_ERROR;
-        it.reset(ubrk_open(type, "", nullptr, 0, &status));
+        it.reset(api.open(type, "", nullptr, 0, &status));
         if (U_FAILURE(status) || !it) {
             it.reset();
-            return Error{std::string("ICU break iterator: ") + u_errorName(status)};
+            return Error{std::string("ICU break iterator: ") + api.error_name(status)};
         }
         return ok_status();
     }
@@ -56,11 +108,13 @@ struct UnicodeBreaks::Impl {
             }
         }
         index_of_unit.push_back(static_cast<std::uint32_t>(n));
+        const IcuApi& api = icu();
         UErrorCode status = U_ZERO_ERROR;
-        ubrk_setText(it, reinterpret_cast<const UChar*>(utf16.data()),
+        api.set_text(it, reinterpret_cast<const UChar*>(utf16.data()),
                      static_cast<std::int32_t>(utf16.size()), &status);
-        if (U_FAILURE(status)) return Error{std::string("ICU break iterator: ") + u_errorName(status)};
-        for (std::int32_t b = ubrk_first(it); b != UBRK_DONE; b = ubrk_next(it)) {
+        if (U_FAILURE(status))
+            return Error{std::string("ICU break iterator: ") + api.error_name(status)};
+        for (std::int32_t b = api.first(it); b != UBRK_DONE; b = api.next(it)) {
             const std::uint32_t k = index_of_unit[static_cast<std::size_t>(b)];
             if (k > 0 && k < n) out[k] = 1;
         }
