@@ -153,8 +153,7 @@ Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
     Rasterizer rasterizer;
     Mask coverage;
     // Pens as TextRenderer places them for the hinting mode (text_renderer.hpp).
-    const bool whole_pixel_pen =
-        options.hinting == Hinting::Full || options.hinting == Hinting::Auto;
+    const bool whole_pixel_pen = hints_horizontally(options.hinting);
     for (PlacedGlyph g : layout->glyphs) {
         if (whole_pixel_pen) g.x_px = std::floor(g.x_px + 0.5);
         auto outline = font.outline(g.gid, OutlineOptions{options.shape.size_px, options.hinting});

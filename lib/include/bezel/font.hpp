@@ -68,6 +68,11 @@ enum class Hinting : std::uint8_t {
 
 // "none", "light", "full", "auto".
 const char* hinting_name(Hinting hinting);
+// Whether the mode fits stems to the grid horizontally too (Full, Auto): such a glyph is drawn at
+// a whole-pixel pen, since its fitting assumed a whole-pixel origin.
+constexpr bool hints_horizontally(Hinting hinting) {
+    return hinting == Hinting::Full || hinting == Hinting::Auto;
+}
 
 struct OutlineOptions {
     double size_px = 0;                // the em size in pixels (> 0 and ≤ kMaxFontSizePx)
