@@ -307,6 +307,31 @@ TEST_F(Cli, VariationsMoveTheRightEdgeOfVariableI) {
                          "wdth");
 }
 
+TEST_F(Cli, NamedInstanceSetsItsCoordinatesAndVariationsApplyOnTop) {
+    // The variable face has instances 0 "Regular" (wght 400) and 1 "Black" (wght 900).
+    auto outline = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args = {kEdgeVariable, "--char", "I", "--font-size", "1000"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        return outline_json(args).dump();
+    };
+    const std::string black = outline({"--variations", "wght=900"});
+    EXPECT_EQ(outline({"--named-instance", "Black"}), black);
+    EXPECT_EQ(outline({"--named-instance", "1"}), black);
+    EXPECT_EQ(outline({"--named-instance", "Black", "--variations", "wght=250"}),
+              outline({"--variations", "wght=250"}));
+    CliRun r = run({"render", kEdgeVariable, "--text", "I", "--named-instance", "Black", "-o",
+                    "black.pgm"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = run({"render", kEdgeVariable, "--text", "I", "--variations", "wght=900", "-o", "900.pgm"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(bezel::test::slurp(tmp_.path() / "black.pgm") ==
+                bezel::test::slurp(tmp_.path() / "900.pgm"));
+    expect_runtime_error(run({"outline", kEdgeVariable, "--char", "I", "--named-instance", "Bold"}),
+                         "--named-instance Bold: no such instance (it has 0 Regular, 1 Black)");
+    expect_runtime_error(run({"outline", "--char", "I", "--named-instance", "0"}),
+                         "the font has no named instances");
+}
+
 TEST_F(Cli, FaceIndexSelectsTheFaceOfACollection) {
     json j0 = outline_json({kEdgeCollection, "--char", "A"});
     json j1 = outline_json({kEdgeCollection, "--face-index", "1", "--char", "I"});

@@ -1,10 +1,12 @@
 #include "font_args.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 
+#include "bezel/font_info.hpp"
 #include "cli_common.hpp"
 #include "parse_check.hpp"
 
@@ -65,6 +67,10 @@ void add_font_args(CLI::App& cmd, FontArgs& args) {
         ->capture_default_str()
         ->type_name("PX")
         ->check(parse_check(parse_font_size, "font-size"));
+    cmd.add_option("--named-instance", args.named_instance,
+                   "A named instance of a variable font, by index (from 0) or name, as bezel info "
+                   "lists them; --variations applies on top")
+        ->type_name("N|NAME");
     cmd.add_option("--variations", args.variations,
                    "Variable-font axis values, comma-separated, e.g. \"wght=700,wdth=80\"")
         ->type_name("LIST")
@@ -106,6 +112,42 @@ Expected<std::vector<VariationSetting>> parse_variations(const std::string& spec
     return out;
 }
 
+Expected<std::vector<VariationSetting>> requested_variations(const FontArgs& args) {
+    std::vector<VariationSetting> settings;
+    if (!args.named_instance.empty()) {
+        auto info = font_info(args.file, args.face_index);
+        if (!info) return info.error();
+        const std::vector<NamedInstance>& instances = info->instances;
+        const NamedInstance* found = nullptr;
+        const std::optional<double> index = parse_number(args.named_instance);
+        for (std::size_t i = 0; i < instances.size() && found == nullptr; ++i)
+            if (instances[i].name == args.named_instance ||
+                (index && *index == static_cast<double>(i)))
+                found = &instances[i];
+        if (found == nullptr) {
+            std::string names;
+            for (std::size_t i = 0; i < instances.size(); ++i)
+                names += (i ? ", " : "") + std::to_string(i) + " " + instances[i].name;
+            return Error{args.file + ": --named-instance " + args.named_instance + ": " +
+                         (instances.empty() ? std::string("the font has no named instances")
+                                            : "no such instance (it has " + names + ")")};
+        }
+        settings = found->coordinates;
+    }
+    auto explicit_settings = parse_variations(args.variations);
+    if (!explicit_settings) return Error{"--variations: " + explicit_settings.error().message};
+    for (const VariationSetting& v : *explicit_settings) {
+        auto same = std::find_if(settings.begin(), settings.end(),
+                                 [&](const VariationSetting& s) { return s.tag == v.tag; });
+        if (same != settings.end()) {
+            same->value = v.value;
+        } else {
+            settings.push_back(v);
+        }
+    }
+    return settings;
+}
+
 Expected<Font> open_font(const FontArgs& args) {
     std::error_code ec;
     auto status = std::filesystem::status(args.file, ec);
@@ -118,9 +160,9 @@ Expected<Font> open_font(const FontArgs& args) {
     // Every command that opens a font this way draws or lists outlines: say what is wrong with
     // a bitmap-only font once, before any per-character message.
     if (Status s = font->require_outlines(); !s) return s.error();
-    if (!args.variations.empty()) {
-        auto settings = parse_variations(args.variations);
-        if (!settings) return Error{"--variations: " + settings.error().message};
+    if (!args.variations.empty() || !args.named_instance.empty()) {
+        auto settings = requested_variations(args);
+        if (!settings) return settings.error();
         auto set = font->set_variations(*settings);
         if (!set) {
             // The header promises the axis in the message, not the file; add the file if absent.

@@ -1,6 +1,6 @@
 // tools/bezel/font_args.hpp — the font options every glyph-drawing subcommand takes, named after
 // HarfBuzz's hb-view where they overlap: FONT (positional, default: the bundled DejaVu Sans),
-// --face-index, --font-size, --variations, --hinting.
+// --face-index, --font-size, --named-instance, --variations, --hinting.
 #pragma once
 
 #include <optional>
@@ -22,6 +22,7 @@ struct FontArgs {
     int face_index = 0;
     double size_px = kDefaultFontSizePx;
     std::string variations;      // "wght=700,wdth=80"
+    std::string named_instance;  // --named-instance: an index or a name of the font's fvar
     std::string hinting = "none";   // --hinting: none, light, full or auto
 };
 
@@ -54,7 +55,12 @@ Expected<std::optional<std::string>> lone_word_as_text(std::string& font_file, c
                                                        bool text_given,
                                                        const std::string& text_option);
 
-// Opens args.file at args.face_index and applies args.variations. Errors name the file and, for
+// The variation settings `args` asks for: the coordinates of --named-instance (by index from 0,
+// or by name, as `bezel info` lists them), then --variations, whose axes win over the instance's.
+// Errors name the file: a font with no such instance (the message lists the ones it has).
+Expected<std::vector<VariationSetting>> requested_variations(const FontArgs& args);
+
+// Opens args.file at args.face_index and applies requested_variations(args). Errors name the file and, for
 // variations, the axis; a missing file or a directory is reported as such before FreeType sees it,
 // and a bitmap-only font (no outlines to draw: Font::require_outlines) is an error too.
 Expected<Font> open_font(const FontArgs& args);

@@ -43,7 +43,8 @@ int run_outline(OutlineArgs& args) {
     report.face_index = font->face_index();
     report.cubic = font->has_cubic_outlines();
     report.metrics = font->metrics();
-    if (!args.font.variations.empty()) report.variations = *parse_variations(args.font.variations);
+    if (!args.font.variations.empty() || !args.font.named_instance.empty())
+        report.variations = *requested_variations(args.font);   // open_font resolved them
     report.size_px = args.font.size_px;
     report.hinting = hinting_of(args.font);
 

@@ -206,8 +206,8 @@ int run_render(RenderArgs& args) {
     auto features = parse_features(args.features);
     if (!features) return fail_usage("--features: " + features.error().message, kRenderCommand);
     options.shape.features = std::move(*features);
-    auto variations = parse_variations(args.font.variations);
-    if (!variations) return fail_usage("--variations: " + variations.error().message, kRenderCommand);
+    auto variations = requested_variations(args.font);
+    if (!variations) return fail_runtime(variations.error().message);
     options.shape.variations = std::move(*variations);
     auto direction = parse_direction(args.direction);
     if (!direction) return fail_usage(direction.error().message, kRenderCommand);
