@@ -72,7 +72,7 @@ TEST(GlyphCache, RepeatedStringMissesOncePerGlyphAndBin) {
     EXPECT_EQ(cache.stats().misses, distinct.size() + 3);
 }
 
-TEST(GlyphCache, HintingBoxModeFlatteningAndLcdSettingsAreInTheKey) {
+TEST(GlyphCache, HintingSlantBoxModeFlatteningAndLcdSettingsAreInTheKey) {
     // Each option that changes the pixels misses once, and what the cache returns equals a
     // direct render with the same options.
     Fixture f;
@@ -80,7 +80,7 @@ TEST(GlyphCache, HintingBoxModeFlatteningAndLcdSettingsAreInTheKey) {
     GlyphRenderOptions o;
     o.size_px = 13;
     const GlyphId g = f.gid(U'g');
-    std::vector<GlyphRenderOptions> variants(7, o);
+    std::vector<GlyphRenderOptions> variants(8, o);
     variants[1].hinting = Hinting::Full;
     variants[2].box = GlyphBoxMode::FreeType;
     variants[3].fill.flatten.method = FlattenMethod::ParabolaIntegral;
@@ -89,6 +89,7 @@ TEST(GlyphCache, HintingBoxModeFlatteningAndLcdSettingsAreInTheKey) {
     variants[5].fill.lcd_order = LcdOrder::Bgr;
     variants[6].fill.format = CoverageFormat::Lcd;
     variants[6].fill.lcd_filter = {{0, 0, 0xFF, 0, 0}};   // no filtering (sum 255)
+    variants[7].slant = 0.2;
     for (std::size_t i = 0; i < variants.size(); ++i) {
         auto cached = cache.get(f.rasterizer, 1, g, variants[i]);
         ASSERT_TRUE(cached) << cached.error().message;

@@ -299,5 +299,59 @@ TEST(GlyphRasterizer, RefusesBadInput) {
     EXPECT_FALSE(rasterizer.measure(gid, o));
 }
 
+// The coverage-weighted mean column of row y (−1 for an empty row).
+double row_centroid(const Mask& m, int y) {
+    double sum = 0, weighted = 0;
+    for (int x = 0; x < m.width(); ++x) {
+        sum += m.at(x, y);
+        weighted += m.at(x, y) * (x + 0.5);
+    }
+    return sum > 0 ? weighted / sum : -1;
+}
+
+TEST(GlyphRasterizer, SlantShearsTheInkAndKeepsItsArea) {
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    GlyphRasterizer rasterizer(*font);
+    const GlyphId l = *font->glyph_for_char(U'l');   // one vertical stem
+    GlyphRenderOptions upright;
+    upright.size_px = 64;
+    GlyphRenderOptions slanted = upright;
+    slanted.slant = 0.25;
+    auto render = [&](const GlyphRenderOptions& o, GlyphBox& box) {
+        auto b = rasterizer.measure(l, o);
+        EXPECT_TRUE(b);
+        box = *b;
+        Mask m(box.width, box.height);
+        EXPECT_TRUE(rasterizer.render(l, o, m.view()));
+        return m;
+    };
+    GlyphBox ub, sb;
+    const Mask u = render(upright, ub), s = render(slanted, sb);
+    double ink_u = 0, ink_s = 0;
+    for (std::uint8_t v : u.pixels()) ink_u += v;
+    for (std::uint8_t v : s.pixels()) ink_s += v;
+    EXPECT_NEAR(ink_s / ink_u, 1.0, 0.01) << "a shear keeps areas";
+    EXPECT_EQ(sb.top, ub.top);
+    EXPECT_EQ(sb.height, ub.height);
+    EXPECT_GT(sb.width, ub.width);
+    // The stem's centre moves right by slant × height: compare the rows 4 px inside the top and
+    // the bottom of the ink, in page columns (box.left + column).
+    const int top = 4, bottom = sb.height - 5;
+    const double rise = bottom - top;
+    const double shift_top = (sb.left + row_centroid(s, top)) - (ub.left + row_centroid(u, top));
+    const double shift_bottom =
+        (sb.left + row_centroid(s, bottom)) - (ub.left + row_centroid(u, bottom));
+    EXPECT_NEAR(shift_top - shift_bottom, 0.25 * rise, 0.1);
+    // Out of range or not a number: an error naming the slant.
+    for (double bad : {1.5, -1.01, std::nan("")}) {
+        GlyphRenderOptions o = upright;
+        o.slant = bad;
+        auto box = rasterizer.measure(l, o);
+        ASSERT_FALSE(box) << bad;
+        EXPECT_NE(box.error().message.find("slant"), std::string::npos);
+    }
+}
+
 }  // namespace
 }  // namespace bezel

@@ -190,6 +190,36 @@ TEST(RenderCli, EveryHintingModeDrawsAsTheLibraryAndHintedEdgesFallOnPixelBounda
     }
 }
 
+TEST(RenderCli, FontSlantDrawsAsTheLibraryAndLeansTheText) {
+    TempDir dir("bezel-render-cli");
+    auto run = run_bezel({"render", "--text", "Ill", "--font-size", "30", "--margin", "2",
+                          "--font-slant", "0.2", "-o", "slant.pgm"},
+                         dir.path());
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    auto renderer = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(renderer);
+    TextRenderOptions o;
+    o.shape.size_px = 30;
+    o.layout.margin_px = 2;
+    o.slant = 0.2;
+    auto slanted = renderer->render_gray("Ill", o);
+    o.slant = 0;
+    auto upright = renderer->render_gray("Ill", o);
+    ASSERT_TRUE(slanted && upright);
+    auto pgm = encode_pgm(slanted->view());
+    EXPECT_TRUE(slurp(dir.path() / "slant.pgm") == std::string(pgm.begin(), pgm.end()));
+    // The top row of ink lies further right than upright: the stems lean.
+    auto first_ink_column = [](const Mask& m, int y) {
+        for (int x = 0; x < m.width(); ++x)
+            if (m.at(x, y) < 128) return x;
+        return -1;
+    };
+    int top = 0;
+    while (top < upright->height() && first_ink_column(*upright, top) < 0) ++top;
+    ASSERT_LT(top, upright->height());
+    EXPECT_GT(first_ink_column(*slanted, top + 1), first_ink_column(*upright, top + 1) + 2);
+}
+
 TEST(RenderCli, DirectionIsTheParagraphsBaseDirection) {
     // An RTL paragraph puts its first (Latin) run at the right: the same picture as an LTR
     // paragraph that starts with the Hebrew run. Each run keeps its own direction.
@@ -230,6 +260,7 @@ TEST(RenderCli, BadInputGivesOneErrorLineAndNoFile) {
         // Vertical text is not offered until it exists.
         {{"render", kDejaVu, "x", "--direction", "ttb", "-o", "out.png"}, 2, "ltr, rtl or auto"},
         {{"render", kDejaVu, "x", "--hinting", "strong", "-o", "out.png"}, 2, "--hinting"},
+        {{"render", kDejaVu, "x", "--font-slant", "3", "-o", "out.png"}, 2, "--font-slant: 3 is not in -1 to 1"},
         {{"render", kDejaVu, "x", "--lcd", "rgb", "--background", "transparent", "-o", "out.png"},
          2, "--lcd needs an opaque --background"},
         {{"render", kDejaVu, "x", "--text", "y", "-o", "out.png"}, 2, "once"},

@@ -38,6 +38,7 @@ constexpr std::size_t kMaxAtlasChars = 1u << 16;
 struct AtlasArgs {
     PngOptions png;  // --compression
     FontArgs font;
+    double slant = 0;           // --font-slant
     std::string chars;
     std::string output_file;   // -o: the PNG
     std::string json_file;     // --json (default: stdout)
@@ -81,6 +82,7 @@ int run_atlas(AtlasArgs& args) {
     GlyphRenderOptions options;
     options.size_px = args.font.size_px;
     options.hinting = hinting_of(args.font);
+    options.slant = args.slant;
 
     std::vector<Entry> entries;
     std::vector<AtlasRect> sizes;
@@ -156,6 +158,7 @@ Command add_atlas_command(CLI::App& app) {
         "--json atlas.json\n"
         "  bezel atlas 0123456789 -o digits.png --json digits.json");
     add_font_args(*cmd, args->font);
+    add_slant_option(*cmd, args->slant);
     cmd->add_option("CHARS", args->chars,
                     "The characters, as --chars; a lone word that is no font file is CHARS");
     cmd->add_option("--chars", args->chars, "The characters (UTF-8); repeats are packed once")

@@ -82,6 +82,14 @@ void add_font_args(CLI::App& cmd, FontArgs& args) {
         ->check(CLI::IsMember({"none", "light", "full", "auto"}));
 }
 
+void add_slant_option(CLI::App& cmd, double& slant) {
+    cmd.add_option("--font-slant", slant,
+                   "Synthetic slant: each point moves right by X times its height above the "
+                   "baseline (0.2 leans about 11 degrees; default 0)")
+        ->type_name("X")
+        ->check(in_range(-kMaxSyntheticSlant, kMaxSyntheticSlant));
+}
+
 Hinting hinting_of(const FontArgs& args) {
     if (args.hinting == "light") return Hinting::Light;
     if (args.hinting == "full") return Hinting::Full;

@@ -26,6 +26,9 @@ struct FontArgs {
     std::string hinting = "none";   // --hinting: none, light, full or auto
 };
 
+// Registers --font-slant X (hb-view's option: GlyphRenderOptions::slant, -1 to 1) on `cmd`.
+void add_slant_option(CLI::App& cmd, double& slant);
+
 // The --hinting mode of `args` (add_font_args has checked the name).
 Hinting hinting_of(const FontArgs& args);
 

@@ -22,6 +22,7 @@ enum class GlyphFormat { Ascii, Json, Png, Pnm };
 struct GlyphArgs {
     PngOptions png;  // --compression
     FontArgs font;
+    double slant = 0;           // --font-slant
     GlyphChoice which;
     std::string format, output_file;
     std::string fill = "nonzero", lcd, offset, flatten = "wang", overlap = "auto";
@@ -84,6 +85,7 @@ int run_glyph(GlyphArgs& args) {
     GlyphRenderOptions options;
     options.size_px = args.font.size_px;
     options.hinting = hinting_of(args.font);
+    options.slant = args.slant;
     options.offset_px = *offset;
     options.box = GlyphBoxMode::FreeType;   // the JSON contract: FT_Render_Glyph's box
     FillOptions& fill = options.fill;
@@ -177,6 +179,7 @@ Command add_glyph_command(CLI::App& app) {
         "  bezel glyph font.ttf --text 'Hamburg' --font-size 32 -o hamburg.png\n"
         "  bezel glyph --gid 36 --font-size 12 --lcd rgb --offset 0.25,0 -O json");
     add_font_args(*cmd, args->font);
+    add_slant_option(*cmd, args->slant);
     add_glyph_choice(*cmd, args->which, "Each character of a string (cmap, no shaping)");
     cmd->add_option("-O,--output-format", args->format,
                     "ascii, json, png or pgm; default: from the -o file's extension, else ascii")

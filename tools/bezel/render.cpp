@@ -42,6 +42,7 @@ constexpr double kMaxOutlinedPagePixels = double{1 << 26};
 
 struct RenderArgs {
     FontArgs font;
+    double slant = 0;           // --font-slant
     std::string text;           // TEXT or --text
     std::string text_file;      // --text-file
     std::string features;       // --features
@@ -158,6 +159,8 @@ Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
         if (whole_pixel_pen) g.x_px = std::floor(g.x_px + 0.5);
         auto outline = font.outline(g.gid, OutlineOptions{options.shape.size_px, options.hinting});
         if (!outline) return outline.error();
+        // The synthetic slant, as GlyphRasterizer applies it (glyph.hpp).
+        if (options.slant != 0) outline->path.transform(Affine::skew(-options.slant, 0));
         if (outline->path.empty()) continue;
         auto stroked = stroke(outline->path, style);
         if (!stroked) return Error{font.file() + ": glyph " + std::to_string(g.gid) + ": " +
@@ -203,6 +206,7 @@ int run_render(RenderArgs& args) {
     TextRenderOptions options;
     options.shape.size_px = args.font.size_px;
     options.hinting = hinting_of(args.font);
+    options.slant = args.slant;
     auto features = parse_features(args.features);
     if (!features) return fail_usage("--features: " + features.error().message, kRenderCommand);
     options.shape.features = std::move(*features);
@@ -318,6 +322,7 @@ Command add_render_command(CLI::App& app) {
         "  bezel render 'Outline' --font-size 96 --stroke 2 -o outline.png\n"
         "  bezel render -O ansi 'Hello'");
     add_font_args(*cmd, args->font);
+    add_slant_option(*cmd, args->slant);
     cmd->add_option("TEXT", args->text, "The text (UTF-8); default: a sample paragraph");
     cmd->add_option("--text", args->text, "The text, as hb-view's --text")->type_name("STRING");
     cmd->add_option("--text-file", args->text_file, "Read the text from a file ('-': stdin)")

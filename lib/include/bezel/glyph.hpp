@@ -40,6 +40,10 @@ enum class GlyphBoxMode : std::uint8_t {
 struct GlyphRenderOptions {
     double size_px = 16;
     Hinting hinting = Hinting::None;   // as OutlineOptions::hinting
+    // Synthetic slant (hb-view's --font-slant): each point moves right by `slant` times its
+    // height above the baseline (0.2 leans about 11°; negative leans left), after hinting.
+    // |slant| ≤ kMaxSyntheticSlant. The box and the FreeType box are those of the slanted outline.
+    double slant = 0;
     // The pen position relative to the glyph's whole-pixel origin, pixels, x right, y DOWN. A
     // toolkit passes the fractional part of its pen position, in [0, 1), and adds the whole part
     // to the box's left / −top itself (GlyphCache quantizes it to kSubpixelBins bins); any finite
@@ -115,8 +119,8 @@ struct GlyphCacheStats {
 };
 
 // Glyph bitmaps keyed by (font id, glyph id, subpixel bins and every option that changes the
-// pixels: size, hinting, box mode and every FillOptions field but the origin), rendered once and
-// blended many times. The pen offset is quantized to kSubpixelBins bins per axis. Memory is
+// pixels: size, hinting, slant, box mode and every FillOptions field but the origin), rendered
+// once and blended many times. The pen offset is quantized to kSubpixelBins bins per axis. Memory is
 // bounded by max_bytes (least recently used entries are evicted).
 // A pointer from get() stays valid until the next get() or clear().
 inline constexpr int kSubpixelBins = 4;

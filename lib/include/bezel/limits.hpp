@@ -66,6 +66,9 @@ inline constexpr std::size_t kDefaultGlyphCacheBytes = std::size_t{1} << 24;
 // Largest |component| of a glyph's pen offset (GlyphRenderOptions::offset_px), in pixels: with the
 // outline's own extent it keeps every box coordinate, in 26.6 too, far inside int.
 inline constexpr double kMaxGlyphOffsetPx = 16384.0;
+// Largest synthetic slant (GlyphRenderOptions::slant): 45°; beyond it a glyph leans further than
+// it is tall, which no oblique style does.
+inline constexpr double kMaxSyntheticSlant = 1.0;
 
 // --- intersect --------------------------------------------------------------------------------
 // Deepest subdivision: parameter width 2⁻ᵏ. Pairs that still cannot be separated or isolated at

@@ -37,6 +37,10 @@ Status check_options(GlyphId gid, const GlyphRenderOptions& o) {
         return Error{glyph_label(gid) + ": pen offset (" + format_number(o.offset_px.x) + ", " +
                      format_number(o.offset_px.y) + ") is not finite or beyond ±" +
                      std::to_string(static_cast<int>(kMaxGlyphOffsetPx)) + " px"};
+    if (!(std::fabs(o.slant) <= kMaxSyntheticSlant))   // NaN fails too
+        return Error{glyph_label(gid) + ": slant " + format_number(o.slant) + " is not in -" +
+                     format_number(kMaxSyntheticSlant) + " to " +
+                     format_number(kMaxSyntheticSlant)};
     if (o.fill.origin.x != 0 || o.fill.origin.y != 0)
         return Error{glyph_label(gid) + ": fill.origin must be zero (offset_px places the pen)"};
     return ok_status();
@@ -103,6 +107,14 @@ Expected<PreparedGlyph> GlyphRasterizer::prepare(GlyphId gid, const GlyphRenderO
     // Glyphs the font marks as overlapping get the accurate overlap resolution regardless.
     glyph.box.overlap =
         outline->overlapping_contours ? OverlapMode::Accurate : options.fill.overlap;
+    if (options.slant != 0) {
+        // x += slant · (−y): y points down, so the height above the baseline is −y.
+        const Affine shear = Affine::skew(-options.slant, 0);
+        outline->path.transform(shear);
+        Rect control = Rect::empty();
+        for (const OutlinePoint& p : outline->points) control = control.union_with(shear * p.pos);
+        outline->metrics.bounds_px = control;
+    }
     Status boxed = options.box == GlyphBoxMode::FreeType
                        ? freetype_box(gid, outline->metrics.bounds_px, options, glyph.box)
                        : tight_box(gid, outline->path, options, glyph.box);
