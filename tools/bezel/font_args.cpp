@@ -156,7 +156,7 @@ Expected<std::vector<VariationSetting>> requested_variations(const FontArgs& arg
     return settings;
 }
 
-Expected<Font> open_font(const FontArgs& args) {
+Expected<Font> open_font(const FontArgs& args, std::vector<VariationSetting>* applied) {
     std::error_code ec;
     auto status = std::filesystem::status(args.file, ec);
     if (!std::filesystem::exists(status)) return Error{args.file + ": no such file"};
@@ -177,6 +177,7 @@ Expected<Font> open_font(const FontArgs& args) {
             const std::string& m = set.error().message;
             return m.find(args.file) == std::string::npos ? Error{args.file + ": " + m} : set.error();
         }
+        if (applied != nullptr) *applied = std::move(*settings);
     }
     return font;
 }

@@ -29,22 +29,20 @@ int run_outline(OutlineArgs& args) {
 
     if (int settled = settle_glyph_choice(args.which, args.font, *args.cmd, "bezel outline"))
         return settled;
-    auto font = open_font(args.font);
+    OutlineReport report;
+    auto font = open_font(args.font, &report.variations);
     if (!font) return fail_runtime(font.error().message);
     auto glyphs = requested_glyphs(args.which, *font);
     if (!glyphs) return fail_runtime(glyphs.error().message);
     if (Status s = report_missing_glyphs(font->file(), missing_of(*glyphs), args.strict); !s)
         return fail_runtime(s.error().message);
 
-    OutlineReport report;
     report.font_file = font->file();
     report.family = font->family_name();
     report.style = font->style_name();
     report.face_index = font->face_index();
     report.cubic = font->has_cubic_outlines();
     report.metrics = font->metrics();
-    if (!args.font.variations.empty() || !args.font.named_instance.empty())
-        report.variations = *requested_variations(args.font);   // open_font resolved them
     report.size_px = args.font.size_px;
     report.hinting = hinting_of(args.font);
 
