@@ -48,6 +48,15 @@ struct VariationSetting {
     double value = 0;
 };
 
+// Where a font comes from: a file, a face of it (collections), and the design coordinates it is
+// used at (empty: the font's defaults). What a font list (bezel/font_collection.hpp) holds and
+// what a system font lookup (fontconfig) returns.
+struct FontSource {
+    std::string file;
+    int face_index = 0;
+    std::vector<VariationSetting> variations;
+};
+
 // Per-glyph metrics at a pixel size, y down, pen at the origin.
 struct GlyphMetrics {
     double advance_px = 0;        // horizontal advance
