@@ -11,6 +11,7 @@
 
 #include "bezel/expected.hpp"
 #include "bezel/font.hpp"
+#include "bezel/font_collection.hpp"
 #include "bezel/shape.hpp"
 
 namespace bezel {
@@ -19,7 +20,7 @@ enum class Align : std::uint8_t { Start, Center, End };
 
 struct LayoutOptions {
     double width_px = 0;       // wrap lines at break opportunities to fit this width; 0 = no wrap
-    double line_height = 0;    // baseline-to-baseline distance as a multiple of the font's own
+    double line_height = 0;    // baseline-to-baseline distance as a multiple of the fonts' own
                                // (ascender − descender + line gap); 0 means 1.0
     double margin_px = 0;      // around the text block on all four sides
     Align align = Align::Start;  // Start is left for LTR paragraphs and right for RTL ones
@@ -30,6 +31,7 @@ struct PlacedGlyph {
     GlyphId gid = 0;
     double x_px = 0, y_px = 0;    // pen position on the baseline
     std::uint32_t cluster = 0;   // byte offset in the whole input text
+    std::uint16_t font = 0;      // index in the FontCollection (0 for the single-font layout)
 };
 
 struct LaidOutLine {
@@ -37,6 +39,9 @@ struct LaidOutLine {
     std::uint32_t text_begin = 0, text_end = 0;     // byte range of the text on this line
     double baseline_y_px = 0;
     double width_px = 0;                            // advance width of the line's glyphs
+    // The line's extent above and below its baseline: the largest ascender and descender
+    // (descent > 0) of the fonts it uses, the first font always among them.
+    double ascent_px = 0, descent_px = 0;
 };
 
 struct TextLayout {
@@ -46,31 +51,42 @@ struct TextLayout {
 };
 
 // Shapes and lays out a paragraph: explicit newlines (\n, \r\n, U+2028) start lines; with
-// width_px > 0 lines wrap at break opportunities (after spaces, after hyphens, between ideographs;
-// a word wider than the line is broken between clusters); each line is shaped per run of one
-// script and direction, runs ordered right to left within an RTL paragraph. `metrics` gives line
-// height. Errors as Shaper::shape, plus a negative or non-finite width/margin/line height,
-// metrics with units_per_em ≤ 0, and a vertical direction (layout is horizontal only).
+// width_px > 0 lines wrap at break opportunities (UAX #14 by ICU, dictionaries for Thai, Lao,
+// Khmer and Myanmar; a word wider than the line is broken between grapheme clusters); each line
+// is shaped per run of one script, direction and font, runs ordered by their bidi levels. `metrics`
+// gives line height. Errors as Shaper::shape, plus a negative or non-finite
+// width/margin/line height, metrics with units_per_em ≤ 0, and a vertical direction (layout is
+// horizontal only).
 //
 // Lines: N line separators make N + 1 lines (an empty text is one empty line); the first
 // baseline is at margin + ascender; spaces at the end of a wrapped line hang (not placed, not
 // counted in its width, but inside its text range). Where a line cuts a word between clusters,
 // both pieces are reshaped (Arabic letters at the cut take their final/initial forms).
 //
-// Bidi is a simplified Unicode Bidirectional Algorithm (UAX #9), without fribidi. Implemented:
-// the paragraph direction from its first strong character (P2/P3) unless shape.direction gives
-// it; strong classes from the Unicode script (letters of Hebrew, Arabic, Syriac, Thaana, N'Ko, …
-// are R, other letters L); marks take the class before them (W1); digits are left-to-right
-// numbers, one level up unless they follow L text (W2, W7, I1, I2); neutrals between equal
-// directions take it, others the paragraph's (N1, N2); runs reordered by level per line (L2).
-// Left out: explicit embeddings, overrides and isolates (LRE…PDI are neutrals), the number
-// separator/terminator rules W3–W6 ("1,000" or "5%" beside Arabic may split), paired brackets
-// (N0), and L1 (trailing whitespace keeps its level; wrapped lines drop it instead). Line
-// breaking is a subset of UAX #14: no dictionary breaking (Thai, Lao, Khmer), no quotation or
-// numeric prefix/postfix classes.
+// Bidi is the full Unicode Bidirectional Algorithm (UAX #9) by GNU FriBidi, per paragraph:
+// explicit embeddings, overrides and isolates, W1–W7, N0–N2, I1–I2, then per line after
+// wrapping L1 (trailing whitespace at the paragraph level) and L2 (runs reordered by level).
+// The paragraph direction is shape.direction, or from the first strong character (P2/P3).
 Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
                                  std::string_view utf8, const ShapeOptions& shape,
                                  const LayoutOptions& layout);
+
+// The same over a list of fonts (font fallback): each grapheme cluster is drawn by the font the
+// rule of font_choice.cpp picks (in short: emoji presentation takes the first colour font that
+// covers it; a cluster of spaces, punctuation or digits stays in the font before it if that font
+// covers it; otherwise the first font of the list that covers it; then the collection's
+// fallback source, whose font is appended; else the first font's .notdef). Runs are shaped per
+// font. shape.variations apply to the first font (after its FontSource's own); the others are
+// shaped at their FontSource's coordinates.
+//
+// Line spacing: a line's ascent and descent are the largest of the fonts it uses, the first
+// font always among them; the first baseline is at margin + its line's ascent, and each next
+// baseline (descent + line gap of the line above + ascent of the line below) × line_height
+// further down, so a line that needs a taller font grows and a page of one font is spaced as
+// layout_text above. Errors as above, plus a font the fallback names that cannot be opened does
+// not fail (FontCollection::warnings) and ICU missing where clusters must be found.
+Expected<TextLayout> layout_text(FontCollection& fonts, std::string_view utf8,
+                                 const ShapeOptions& shape, const LayoutOptions& layout);
 
 // The glyphs of a layout that are .notdef (gid 0): characters the font maps to nothing, drawn as
 // its "missing glyph" box, as hb-view draws them.

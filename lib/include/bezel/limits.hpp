@@ -69,6 +69,11 @@ inline constexpr double kMaxGlyphOffsetPx = 16384.0;
 // Largest synthetic slant (GlyphRenderOptions::slant): 45°; beyond it a glyph leans further than
 // it is tall, which no oblique style does.
 inline constexpr double kMaxSyntheticSlant = 1.0;
+// Most fonts in one FontCollection, listed and found by system fallback together: each holds a
+// FreeType face and a HarfBuzz face (about 100 KiB to a few MiB of tables mapped or parsed), and
+// text draws from a handful; a page whose clusters would need more is refused rather than
+// opening fonts without end.
+inline constexpr std::size_t kMaxCollectionFonts = 64;
 
 // --- intersect --------------------------------------------------------------------------------
 // Deepest subdivision: parameter width 2⁻ᵏ. Pairs that still cannot be separated or isolated at
