@@ -86,6 +86,22 @@ Expected<std::vector<GlyphRequest>> requested_glyphs(const GlyphChoice& choice, 
     return out;
 }
 
+Expected<std::vector<GlyphRequest>> requested_glyphs(const GlyphChoice& choice,
+                                                     FontCollection& fonts) {
+    auto requests = requested_glyphs(choice, fonts.font(0));
+    if (!requests) return requests.error();
+    for (GlyphRequest& r : *requests) {
+        if (!r.missing) continue;
+        for (std::size_t i = 1; i < fonts.size(); ++i) {
+            if (auto gid = fonts.font(i).glyph_for_char(*r.code_point)) {
+                r = GlyphRequest{*gid, r.code_point, false, i};
+                break;
+            }
+        }
+    }
+    return requests;
+}
+
 MissingGlyphs missing_of(const std::vector<GlyphRequest>& requests) {
     MissingGlyphs missing;
     for (const GlyphRequest& r : requests) {
