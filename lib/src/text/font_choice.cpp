@@ -28,10 +28,24 @@ constexpr std::uint16_t kNoFont = 0xFFFF;
 constexpr std::size_t kMaxUnfoundRemembered = 4096;
 
 constexpr char32_t kVs15 = 0xFE0E, kVs16 = 0xFE0F;
+// The first character with Emoji_Presentation.
+constexpr char32_t kFirstEmojiPresentation = 0x231A;
 
 bool is_common(char32_t cp) {
     const hb_script_t s = script_of(cp);
     return s == HB_SCRIPT_COMMON || s == HB_SCRIPT_INHERITED || s == HB_SCRIPT_UNKNOWN;
+}
+
+// Whether `cp` may be default-ignorable: the ranges of DerivedCoreProperties'
+// Default_Ignorable_Code_Point, so that ICU is asked only about these few.
+bool maybe_ignorable(char32_t cp) {
+    return cp == 0xAD || cp == 0x34F || cp == 0x61C || (cp >= 0x115F && cp <= 0x1160) ||
+           (cp >= 0x17B4 && cp <= 0x17B5) || (cp >= 0x180B && cp <= 0x180F) ||
+           (cp >= 0x200B && cp <= 0x200F) || (cp >= 0x202A && cp <= 0x202E) ||
+           (cp >= 0x2060 && cp <= 0x206F) || cp == 0x3164 || (cp >= 0xFE00 && cp <= 0xFE0F) ||
+           cp == 0xFEFF || cp == 0xFFA0 || (cp >= 0xFFF0 && cp <= 0xFFF8) ||
+           (cp >= 0x1BCA0 && cp <= 0x1BCA3) || (cp >= 0x1D173 && cp <= 0x1D17A) ||
+           (cp >= 0xE0000 && cp <= 0xE0FFF);
 }
 
 }  // namespace
@@ -40,6 +54,22 @@ void CollectionFonts::variations(std::size_t font, const ShapeOptions& shape,
                                  std::vector<VariationSetting>& out) const {
     out = fonts_.source(font).variations;
     if (font == 0) out.insert(out.end(), shape.variations.begin(), shape.variations.end());
+}
+
+std::uint64_t CollectionFonts::fonts_with(char32_t cp) {
+    if (coverage_.empty()) coverage_.resize(kCoverageSlots);
+    Coverage& c = coverage_[(cp ^ (cp >> 12)) % kCoverageSlots];
+    if (c.cp != cp) c = Coverage{cp, 0, 0};
+    for (std::size_t i = c.fonts_checked; i < fonts_.size(); ++i)
+        if (fonts_.font(i).glyph_for_char(cp)) c.mask |= std::uint64_t{1} << i;
+    c.fonts_checked = static_cast<std::uint16_t>(fonts_.size());
+    return c.mask;
+}
+
+std::uint64_t CollectionFonts::fonts_with_needed() {
+    std::uint64_t mask = ~std::uint64_t{0};
+    for (char32_t c : needed_) mask &= fonts_with(c);
+    return mask;
 }
 
 Expected<std::optional<std::uint16_t>> CollectionFonts::from_fallback(bool prefer_colour) {
@@ -62,11 +92,8 @@ Expected<std::optional<std::uint16_t>> CollectionFonts::from_fallback(bool prefe
                 index = fonts_.size();
             }
         }
-        if (index < fonts_.size()) {
-            auto ok = covers(index);
-            if (!ok) return ok.error();
-            if (*ok) found = static_cast<std::uint16_t>(index);
-        }
+        if (index < fonts_.size() && ((fonts_with_needed() >> index) & 1) != 0)
+            found = static_cast<std::uint16_t>(index);
     }
     if (!found && single) {
         if (unfound_.size() >= kMaxUnfoundRemembered) unfound_.clear();
@@ -78,30 +105,18 @@ Expected<std::optional<std::uint16_t>> CollectionFonts::from_fallback(bool prefe
 Expected<std::uint16_t> CollectionFonts::choose(std::uint16_t previous, bool prefer_colour,
                                                 bool prefer_text) {
     const std::size_t n = fonts_.size();
-    if (prefer_colour) {
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!fonts_.is_colour(i)) continue;
-            auto ok = covers(i);
-            if (!ok) return ok.error();
-            if (*ok) return static_cast<std::uint16_t>(i);
-        }
-    }
-    if (previous != kNoFont &&
-        std::all_of(needed_.begin(), needed_.end(), [](char32_t c) { return is_common(c); })) {
-        auto ok = covers(previous);
-        if (!ok) return ok.error();
-        if (*ok) return previous;
-    }
-    for (int pass = 0; pass < 2; ++pass) {
-        for (std::size_t i = 0; i < n; ++i) {
-            // With VS15, colour fonts only in a second pass.
-            if (prefer_text && fonts_.is_colour(i) == (pass == 0)) continue;
-            auto ok = covers(i);
-            if (!ok) return ok.error();
-            if (*ok) return static_cast<std::uint16_t>(i);
-        }
-        if (!prefer_text) break;
-    }
+    const std::uint64_t covering = fonts_with_needed();
+    auto has = [&](std::size_t i) { return ((covering >> i) & 1) != 0; };
+    if (prefer_colour)
+        for (std::size_t i = 0; i < n; ++i)
+            if (fonts_.is_colour(i) && has(i)) return static_cast<std::uint16_t>(i);
+    if (previous != kNoFont && has(previous) &&
+        std::all_of(needed_.begin(), needed_.end(), [](char32_t c) { return is_common(c); }))
+        return previous;
+    // With VS15 a colour font only when no other covers the cluster.
+    for (int pass = prefer_text ? 0 : 1; pass < 2; ++pass)
+        for (std::size_t i = 0; i < n; ++i)
+            if (has(i) && (pass == 1 || !fonts_.is_colour(i))) return static_cast<std::uint16_t>(i);
     auto found = from_fallback(prefer_colour);
     if (!found) return found.error();
     return found->value_or(0);
@@ -116,12 +131,10 @@ Status CollectionFonts::assign(const char32_t* text, std::size_t n, UnicodeBreak
     {
         bool colour_in_list = false;
         for (std::size_t i = 1; i < fonts_.size(); ++i) colour_in_list |= fonts_.is_colour(i);
-        const Font& first = fonts_.font(0);
         bool all = true;
         for (std::size_t k = 0; k < n && all; ++k) {
-            // U+231A is the first character with Emoji_Presentation.
-            if (colour_in_list && text[k] >= 0x231A) all = false;
-            else all = first.glyph_for_char(text[k]).has_value();
+            if (colour_in_list && text[k] >= kFirstEmojiPresentation) all = false;
+            else all = (fonts_with(text[k]) & 1) != 0;
         }
         if (all) return ok_status();
     }
@@ -136,14 +149,17 @@ Status CollectionFonts::assign(const char32_t* text, std::size_t n, UnicodeBreak
             const char32_t c = text[k];
             vs15 |= c == kVs15;
             vs16 |= c == kVs16;
-            auto ignorable = has_unicode_property(c, UnicodeProperty::DefaultIgnorable);
-            if (!ignorable) return ignorable.error();
-            if (!*ignorable) needed_.push_back(c);
+            if (maybe_ignorable(c)) {
+                auto ignorable = has_unicode_property(c, UnicodeProperty::DefaultIgnorable);
+                if (!ignorable) return ignorable.error();
+                if (*ignorable) continue;
+            }
+            needed_.push_back(c);
         }
         std::uint16_t font = previous == kNoFont ? 0 : previous;
         if (!needed_.empty()) {
             bool emoji = vs16;
-            if (!vs15 && !vs16) {
+            if (!vs15 && !vs16 && needed_[0] >= kFirstEmojiPresentation) {
                 auto presentation =
                     has_unicode_property(needed_[0], UnicodeProperty::EmojiPresentation);
                 if (!presentation) return presentation.error();

@@ -288,8 +288,19 @@ Status ParagraphLayout::place_line(const LineSpan& line, TextLayout& out,
             while (q < b && line_levels_[q - line.begin] == level) ++q;
             const std::uint32_t from = offset(base_ + p), to = offset(base_ + q);
             Piece piece{pool_.size(), 0, run.font};
-            for (const ShapedGlyph& g : *glyphs)
-                if (g.cluster >= from && g.cluster < to) pool_.push_back(g);
+            // HarfBuzz keeps a run's clusters monotonic (ascending left to right, descending
+            // for a right-to-left run), so the glyphs of [from, to) are one stretch, found by
+            // two binary searches instead of a scan of the whole run per line.
+            const bool rtl = (run.level & 1) != 0;
+            auto before = [&](std::uint32_t bound) {
+                return [bound, rtl](const ShapedGlyph& g) {
+                    return rtl ? g.cluster >= bound : g.cluster < bound;
+                };
+            };
+            auto first = std::partition_point(glyphs->begin(), glyphs->end(),
+                                              before(rtl ? to : from));
+            auto last = std::partition_point(first, glyphs->end(), before(rtl ? from : to));
+            pool_.insert(pool_.end(), first, last);
             piece.count = pool_.size() - piece.first;
             pieces_.push_back(piece);
             levels_.push_back(level);

@@ -68,12 +68,24 @@ private:
     // The font for one cluster (code points needing a glyph in needed_), given the previous
     // cluster's font (kNoFont at the start of a paragraph).
     Expected<std::uint16_t> choose(std::uint16_t previous, bool prefer_colour, bool prefer_text);
-    Expected<bool> covers(std::size_t font) const {
-        return fonts_.covers(font, needed_.data(), needed_.size());
-    }
+    // Bit i set: font i maps `cp` (remembered per code point, extended as fonts are added).
+    std::uint64_t fonts_with(char32_t cp);
+    // The fonts that map every code point of needed_.
+    std::uint64_t fonts_with_needed();
     Expected<std::optional<std::uint16_t>> from_fallback(bool prefer_colour);
 
+    // A direct-mapped memo of fonts_with: a page uses a few hundred distinct characters, each
+    // looked up in every font once instead of once per occurrence.
+    struct Coverage {
+        char32_t cp = 0xFFFFFFFF;
+        std::uint16_t fonts_checked = 0;
+        std::uint64_t mask = 0;
+    };
+    static constexpr std::size_t kCoverageSlots = 4096;
+    static_assert(kMaxCollectionFonts <= 64, "a coverage mask holds one bit per font");
+
     FontCollection& fonts_;
+    std::vector<Coverage> coverage_;
     std::vector<std::uint8_t> starts_;
     std::u32string needed_;
     // Single characters the fallback had no font for: not asked again (bounded; cleared when
