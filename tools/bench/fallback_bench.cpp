@@ -1,14 +1,15 @@
-// bench_fallback_bench: the cost of font fallback. A page of mixed-script text drawn from a list
-// of fonts against a single-font page of the same number of characters, both in one process
-// through TextRenderer::render_gray (glyph cache warm, as a program rendering many pages has
-// it), wrapped at 800 px, 16 px text:
-//   latin     tools/bench/render_page.txt's prose in Cantarell alone;
-//   mixed     Latin, Arabic, Hebrew and Devanagari words (plus CJK when fonts-test/noto-cjk has
-//             its font), each script from its own font: Cantarell, then the Noto fonts;
-//   mixed-1   the same mixed text in a one-font list (Cantarell: the scripts it lacks draw as
-//             .notdef): shaping and layout of those characters without the fallback search.
+// bench_fallback_bench: the cost of font fallback, in one process through
+// TextRenderer::render_gray (glyph caches warm, as a program rendering many pages has them),
+// 16 px text wrapped at 800 px, pages of as many characters as tools/bench/render_page.txt:
+//   single    Latin, Arabic, Hebrew and symbol words (arrows, math) in DejaVu Sans alone, which
+//             has them all;
+//   list      the same text from a list of four fonts, each word from another: Cantarell (Latin),
+//             Noto Sans Arabic, Noto Sans Hebrew, DejaVu Sans (the symbols);
+//   latin     render_page.txt's prose in Cantarell alone;
+//   scripts   Latin, Arabic, Hebrew, Devanagari (and CJK when fonts-test/noto-cjk has its font)
+//             words from Cantarell and the Noto fonts: more scripts than any one font here has.
 // Reported: the median time of each (runs interleaved, so a change in the machine's load hits
-// them alike) and the ratios mixed / latin (the bar: at most 1.5) and mixed / mixed-1.
+// them alike) and the ratios list / single (the bar: at most 1.5) and scripts / latin.
 //
 //   bench_fallback_bench [RUNS]      (default 41)
 #include <algorithm>
@@ -46,20 +47,22 @@ std::string utf8_of(const std::u32string& text) {
     return out;
 }
 
-// Words of each script in turn until `length` characters.
-std::u32string mixed_text(std::size_t length, bool cjk) {
-    std::vector<std::u32string> words = {
-        U"The quick brown fox jumps over the lazy dog. ",
-        U"\u0645\u0631\u062D\u0628\u0627 \u0628\u0627\u0644\u0639\u0627\u0644\u0645 ",
-        U"\u05E9\u05DC\u05D5\u05DD \u05E2\u05D5\u05DC\u05DD ",
-        U"\u0928\u092E\u0938\u094D\u0924\u0947 \u0926\u0941\u0928\u093F\u092F\u093E ",
-    };
-    if (cjk) words.push_back(U"\u4F60\u597D\u4E16\u754C\uFF0C\u3053\u3093\u306B\u3061\u306F ");
+// `words` in turn until `length` characters.
+std::u32string cycle(const std::vector<std::u32string>& words, std::size_t length) {
     std::u32string out;
     for (std::size_t i = 0; out.size() < length; ++i) out += words[i % words.size()];
     out.resize(length);
     return out;
 }
+
+const std::vector<std::u32string> kLatin = {U"The quick brown fox jumps over the lazy dog. "};
+const std::u32string kArabicWords =
+    U"\u0645\u0631\u062D\u0628\u0627 \u0628\u0627\u0644\u0639\u0627\u0644\u0645 ";
+const std::u32string kHebrewWords = U"\u05E9\u05DC\u05D5\u05DD \u05E2\u05D5\u05DC\u05DD ";
+const std::u32string kSymbolWords = U"\u2192 \u2211\u221E \u2264 \u2713 ";
+const std::u32string kDevanagariWords =
+    U"\u0928\u092E\u0938\u094D\u0924\u0947 \u0926\u0941\u0928\u093F\u092F\u093E ";
+const std::u32string kCjkWords = U"\u4F60\u597D\u4E16\u754C\uFF0C\u3053\u3093\u306B\u3061\u306F ";
 
 bezel::TextRenderer open_list(const std::vector<std::string>& files) {
     std::vector<bezel::FontSource> sources;
@@ -99,43 +102,53 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
     const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 41;
     const std::string cantarell = kFonts + "/cantarell/Cantarell-Regular.otf";
+    const std::string dejavu = kFonts + "/dejavu-sans/DejaVuSans.ttf";
+    const std::string arabic = kFonts + "/noto-arabic/NotoSansArabic-Regular.ttf";
+    const std::string hebrew = kFonts + "/noto-hebrew/NotoSansHebrew-Regular.ttf";
+    const std::string devanagari = kFonts + "/noto-devanagari/NotoSansDevanagari-Regular.ttf";
     const std::string cjk_font = kFonts + "/noto-cjk/NotoSansCJK-subset.otf";
     const bool cjk = std::filesystem::exists(cjk_font);
-    std::vector<std::string> list = {cantarell,
-                                     kFonts + "/noto-arabic/NotoSansArabic-Regular.ttf",
-                                     kFonts + "/noto-hebrew/NotoSansHebrew-Regular.ttf",
-                                     kFonts + "/noto-devanagari/NotoSansDevanagari-Regular.ttf"};
-    if (cjk) list.push_back(cjk_font);
 
     const std::u32string page = read_page();
     const std::string latin = utf8_of(page);
-    const std::string mixed = utf8_of(mixed_text(page.size(), cjk));
+    const std::string mixed = utf8_of(
+        cycle({kLatin[0], kArabicWords, kHebrewWords, kSymbolWords}, page.size()));
+    std::vector<std::u32string> script_words = {kLatin[0], kArabicWords, kHebrewWords,
+                                                kDevanagariWords};
+    std::vector<std::string> script_fonts = {cantarell, arabic, hebrew, devanagari};
+    if (cjk) {
+        script_words.push_back(kCjkWords);
+        script_fonts.push_back(cjk_font);
+    }
+    const std::string scripts = utf8_of(cycle(script_words, page.size()));
 
-    bezel::TextRenderer latin_renderer = open_list({cantarell});
-    bezel::TextRenderer mixed_renderer = open_list(list);
-    bezel::TextRenderer mixed_one = open_list({cantarell});
+    struct Case {
+        const char* name;
+        bezel::TextRenderer renderer;
+        const std::string* text;
+        std::vector<double> times;
+    };
+    std::vector<Case> cases;
+    cases.push_back({"single", open_list({dejavu}), &mixed, {}});
+    cases.push_back({"list", open_list({cantarell, arabic, hebrew, dejavu}), &mixed, {}});
+    cases.push_back({"latin", open_list({cantarell}), &latin, {}});
+    cases.push_back({"scripts", open_list(script_fonts), &scripts, {}});
     bezel::TextRenderOptions options;
     options.shape.size_px = 16;
     options.layout.width_px = 800;
     options.layout.margin_px = 16;
-    // Warm the glyph caches.
-    time_render(latin_renderer, latin, options);
-    time_render(mixed_renderer, mixed, options);
-    time_render(mixed_one, mixed, options);
-    std::vector<double> t_latin, t_mixed, t_one;
-    for (int i = 0; i < runs; ++i) {
-        t_latin.push_back(time_render(latin_renderer, latin, options));
-        t_mixed.push_back(time_render(mixed_renderer, mixed, options));
-        t_one.push_back(time_render(mixed_one, mixed, options));
-    }
-    const double l = median(t_latin), m = median(t_mixed), o = median(t_one);
-    std::printf("characters a page: %zu; fonts in the mixed list: %zu%s; runs: %d\n", page.size(),
-                list.size(), cjk ? " (with CJK)" : "", runs);
+    for (Case& c : cases) time_render(c.renderer, *c.text, options);   // warm the caches
+    for (int i = 0; i < runs; ++i)
+        for (Case& c : cases) c.times.push_back(time_render(c.renderer, *c.text, options));
+    std::printf("characters a page: %zu; runs: %d; scripts page: %zu fonts%s\n", page.size(), runs,
+                script_fonts.size(), cjk ? " (with CJK)" : "");
     std::printf("%-9s %9s\n", "page", "ms");
-    std::printf("%-9s %9.3f\n", "latin", l * 1e3);
-    std::printf("%-9s %9.3f\n", "mixed", m * 1e3);
-    std::printf("%-9s %9.3f\n", "mixed-1", o * 1e3);
-    std::printf("mixed / latin   %.2f (bar: <= 1.5)\n", m / l);
-    std::printf("mixed / mixed-1 %.2f\n", m / o);
+    double t[4];
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        t[i] = median(cases[i].times);
+        std::printf("%-9s %9.3f\n", cases[i].name, t[i] * 1e3);
+    }
+    std::printf("list / single    %.2f (bar: <= 1.5)\n", t[1] / t[0]);
+    std::printf("scripts / latin  %.2f\n", t[3] / t[2]);
     return 0;
 }
