@@ -208,11 +208,11 @@ class TableFallback : public FallbackSource {
 public:
     std::map<char32_t, FontSource> table;
     int calls = 0;
-    std::optional<FontSource> font_for(const std::u32string& cluster, bool) override {
+    Expected<std::optional<FontSource>> font_for(const FallbackRequest& request) override {
         ++calls;
-        auto it = table.find(cluster.at(0));
-        if (it == table.end()) return std::nullopt;
-        return it->second;
+        auto it = table.find(request.cluster.at(0));
+        if (it == table.end()) return std::optional<FontSource>{};
+        return std::optional<FontSource>(it->second);
     }
 };
 

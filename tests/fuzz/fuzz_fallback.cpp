@@ -46,12 +46,14 @@ bezel::FontSource pick(FuzzReader& in) {
 class PoolFallback : public bezel::FallbackSource {
 public:
     explicit PoolFallback(std::string choices) : choices_(std::move(choices)) {}
-    std::optional<bezel::FontSource> font_for(const std::u32string& cluster, bool) override {
-        BEZEL_FUZZ_CHECK(!cluster.empty());
-        if (choices_.empty()) return std::nullopt;
+    bezel::Expected<std::optional<bezel::FontSource>> font_for(
+        const bezel::FallbackRequest& request) override {
+        BEZEL_FUZZ_CHECK(!request.cluster.empty());
+        if (choices_.empty()) return std::optional<bezel::FontSource>{};
         const auto c = static_cast<unsigned char>(choices_[next_++ % choices_.size()]);
-        if (c % 2 == 0) return std::nullopt;
-        return bezel::FontSource{kPool[(c / 2) % kPool.size()], 0, {}};
+        if (c % 4 == 0) return std::optional<bezel::FontSource>{};
+        if (c % 4 == 2) return bezel::Error{"fallback source failed"};
+        return std::optional<bezel::FontSource>(bezel::FontSource{kPool[(c / 4) % kPool.size()], 0, {}});
     }
 
 private:

@@ -90,7 +90,6 @@ int run_atlas(AtlasArgs& args) {
     auto fonts = open_font_list(args.font, args.fonts, font_file_given(args.font, *args.cmd),
                                 std::move(*variations));
     if (!fonts) return fail_runtime(fonts.error().message);
-    const bool listed = fonts->size() > 1;
     std::vector<std::unique_ptr<GlyphRasterizer>> rasterizers;
     for (std::size_t i = 0; i < fonts->size(); ++i)
         rasterizers.push_back(std::make_unique<GlyphRasterizer>(fonts->font(i)));
@@ -103,11 +102,15 @@ int run_atlas(AtlasArgs& args) {
     std::vector<AtlasRect> sizes;
     MissingGlyphs missing;
     for (char32_t c : distinct) {
-        // The first font of the list that maps c; the first font's .notdef when none does.
-        std::size_t font = 0;
+        // The first font of the list that maps c (or the fallback's); the first font's .notdef
+        // when none does.
+        auto found = fonts->font_for(std::u32string(1, c));
+        if (!found) return fail_runtime(found.error().message);
+        const std::size_t font = found->value_or(0);
         std::optional<GlyphId> gid;
-        for (std::size_t i = 0; i < fonts->size() && !gid; ++i)
-            if ((gid = fonts->font(i).glyph_for_char(c))) font = i;
+        if (*found) gid = fonts->font(font).glyph_for_char(c);
+        while (rasterizers.size() < fonts->size())
+            rasterizers.push_back(std::make_unique<GlyphRasterizer>(fonts->font(rasterizers.size())));
         if (!gid) {
             if (missing.count == 0) missing.first_code_point = c;
             ++missing.count;
@@ -125,6 +128,7 @@ int run_atlas(AtlasArgs& args) {
     if (!packing) return fail_runtime(packing.error().message);
 
     Mask texture(packing->width, packing->height);
+    const bool listed = fonts->size() > 1;
     nlohmann::ordered_json glyphs = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < entries.size(); ++i) {
         const Entry& e = entries[i];

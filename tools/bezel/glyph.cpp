@@ -110,9 +110,9 @@ int run_glyph(GlyphArgs& args) {
     }
     auto fonts = open_font_list(args.font, args.fonts, font_file_given(args.font, *args.cmd), std::move(*variations));
     if (!fonts) return fail_runtime(fonts.error().message);
-    const bool listed = fonts->size() > 1;
     auto requests = requested_glyphs(args.which, *fonts);
     if (!requests) return fail_runtime(requests.error().message);
+    const bool listed = fonts->size() > 1;
     if (Status s = report_missing_glyphs(font_list_names(*fonts), missing_of(*requests),
                                          args.strict);
         !s)
@@ -120,7 +120,7 @@ int run_glyph(GlyphArgs& args) {
 
     // Each glyph's outline is loaded once; its box is added to the pixel budget before its
     // pixels are allocated.
-    std::vector<std::unique_ptr<GlyphRasterizer>> rasterizers;
+    std::vector<std::unique_ptr<GlyphRasterizer>> rasterizers;   // the fallback may have added fonts
     for (std::size_t i = 0; i < fonts->size(); ++i)
         rasterizers.push_back(std::make_unique<GlyphRasterizer>(fonts->font(i)));
     Font* font = &fonts->font(0);

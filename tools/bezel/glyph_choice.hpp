@@ -54,9 +54,9 @@ int settle_glyph_choice(GlyphChoice& choice, FontArgs& font, const CLI::App& cmd
 // TEXT the font does not map become .notdef (gid 0) marked `missing`, for report_missing_glyphs
 // (missing_glyphs.hpp), as hb-view draws them.
 Expected<std::vector<GlyphRequest>> requested_glyphs(const GlyphChoice& choice, const Font& font);
-// The same over a list: each character from the first font that maps it (no cluster or emoji
-// rule: one character at a time, as it is asked for), .notdef of the first font when none
-// does; a --gid is the first font's.
+// The same over a list: each character from the first font that maps it, or the list's
+// fallback source's (FontCollection::font_for: one character at a time, as it is asked for, no
+// cluster or emoji rule), .notdef of the first font when none does; a --gid is the first font's.
 Expected<std::vector<GlyphRequest>> requested_glyphs(const GlyphChoice& choice,
                                                      FontCollection& fonts);
 

@@ -24,14 +24,21 @@ enum class FontOrigin : std::uint8_t {
     System,   // found by the system fallback for characters no listed font covers
 };
 
+// What a fallback source is asked for: a font for one grapheme cluster.
+struct FallbackRequest {
+    std::u32string cluster;       // the code points that need glyphs (default-ignorables removed)
+    bool prefer_colour = false;   // emoji presentation: a colour font first
+    bool outlines_only = false;   // the collection takes only fonts with outlines
+};
+
 // Asked for a font when no font of the collection covers a cluster (for example fontconfig's
-// sorted fallback: SystemFonts, system_fonts.hpp). `cluster` holds the code points that need
-// glyphs (default-ignorable ones removed); `prefer_colour` is set for emoji presentation.
+// sorted fallback: system_fallback below). nullopt: no font has it. An Error (a source that
+// cannot work, such as a malformed pattern) becomes a warning of the collection, and the cluster
+// is drawn as missing.
 class FallbackSource {
 public:
     virtual ~FallbackSource() = default;
-    virtual std::optional<FontSource> font_for(const std::u32string& cluster,
-                                               bool prefer_colour) = 0;
+    virtual Expected<std::optional<FontSource>> font_for(const FallbackRequest& request) = 0;
 };
 
 class FontCollection {
@@ -59,6 +66,11 @@ public:
     const FontMetrics& metrics(std::size_t i) const;
     // A colour font (COLR, CBDT, sbix): preferred for emoji presentation.
     bool is_colour(std::size_t i) const;
+
+    // The font for one character or cluster outside text layout (a glyph, an atlas entry): the
+    // first font of the list that covers it, else the fallback source's (appended), else
+    // nullopt. Errors as covers().
+    Expected<std::optional<std::size_t>> font_for(const std::u32string& cluster);
 
     // Whether font i maps every code point of `cluster` except default-ignorable ones (ZWJ,
     // variation selectors, tags: HarfBuzz draws them as nothing when the font lacks them).

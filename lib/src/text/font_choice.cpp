@@ -77,7 +77,12 @@ Expected<std::optional<std::uint16_t>> CollectionFonts::from_fallback(bool prefe
     if (fallback == nullptr) return std::optional<std::uint16_t>{};
     const bool single = needed_.size() == 1;
     if (single && unfound_.count(needed_[0]) != 0) return std::optional<std::uint16_t>{};
-    const std::optional<FontSource> source = fallback->font_for(needed_, prefer_colour);
+    request_.cluster = needed_;
+    request_.prefer_colour = prefer_colour;
+    request_.outlines_only = fonts_.outlines_only();
+    auto asked = fallback->font_for(request_);
+    if (!asked) fonts_.add_warning(asked.error().message);
+    const std::optional<FontSource> source = asked ? *asked : std::nullopt;
     std::optional<std::uint16_t> found;
     if (source) {
         std::size_t index = fonts_.size();

@@ -91,6 +91,41 @@ Expected<bool> FontCollection::covers(std::size_t i, const char32_t* cluster,
     return true;
 }
 
+Expected<std::optional<std::size_t>> FontCollection::font_for(const std::u32string& cluster) {
+    for (std::size_t i = 0; i < size(); ++i) {
+        auto ok = covers(i, cluster.data(), cluster.size());
+        if (!ok) return ok.error();
+        if (*ok) return std::optional<std::size_t>(i);
+    }
+    if (!impl_->fallback) return std::optional<std::size_t>{};
+    FallbackRequest request;
+    for (char32_t c : cluster) {
+        auto ignorable =
+            text_detail::has_unicode_property(c, text_detail::UnicodeProperty::DefaultIgnorable);
+        if (!ignorable) return ignorable.error();
+        if (!*ignorable) request.cluster.push_back(c);
+    }
+    request.outlines_only = impl_->outlines_only;
+    auto source = impl_->fallback->font_for(request);
+    if (!source) {
+        add_warning(source.error().message);
+        return std::optional<std::size_t>{};
+    }
+    if (!*source) return std::optional<std::size_t>{};
+    for (std::size_t i = 0; i < size(); ++i)
+        if (this->source(i).file == (*source)->file &&
+            this->source(i).face_index == (*source)->face_index)
+            return std::optional<std::size_t>{};   // listed, and it did not cover the cluster
+    auto added = add(**source, FontOrigin::System);
+    if (!added) {
+        add_warning(added.error().message);
+        return std::optional<std::size_t>{};
+    }
+    auto ok = covers(*added, cluster.data(), cluster.size());
+    if (!ok) return ok.error();
+    return *ok ? std::optional<std::size_t>(*added) : std::optional<std::size_t>{};
+}
+
 void FontCollection::set_fallback(std::shared_ptr<FallbackSource> fallback) {
     impl_->fallback = std::move(fallback);
 }

@@ -88,6 +88,7 @@ private:
     std::vector<Coverage> coverage_;
     std::vector<std::uint8_t> starts_;
     std::u32string needed_;
+    FallbackRequest request_;
     // Single characters the fallback had no font for: not asked again (bounded; cleared when
     // full).
     std::unordered_set<char32_t> unfound_;
