@@ -10,6 +10,8 @@
 //   Tight     columns floor(bx0 + dx) .. ceil(bx1 + dx) of the curves' tight bounds b, rows alike;
 //   FreeType  the control box and the offset in 26.6 fixed point, floor/ceil, as FreeType's
 //             ft_glyphslot_preset_bitmap (y up there: bitmap_top is the ceiling of the box's top).
+// Synthetic bold and slant change the outline before either box is taken (bold first, then the
+// shear: glyph.hpp says why), so both boxes are those of the outline as drawn.
 #include <cmath>
 #include <cstdio>
 #include <string>
