@@ -4,6 +4,7 @@
 // keeping bold and regular apart, and the values it refuses.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -145,6 +146,38 @@ TEST(SyntheticBold, InkKeepsItsLeftEdgeAndBottomAndGrowsRightAndUp) {
     EXPECT_NEAR(bt, pt - 2 * d, 0.02);
     EXPECT_DOUBLE_EQ(bold.box.advance_px, plain.box.advance_px + o.bold * o.size_px);
     EXPECT_EQ(bold.box.overlap, OverlapMode::Accurate);
+}
+
+TEST(SyntheticBold, EmboldensAfterHintingSoEveryHintedEdgeMovesByTheSameAmount) {
+    // The dilation comes after the hinter, so it moves the hinted edges themselves: with
+    // d = 0.5 px and the move right by d, the left edge of 'l' stays exactly where the hinter put
+    // it and the right edge moves by exactly 1 px. The middle row of the bold stem is then the
+    // hinted row with one more fully covered column, the partial edge pixels unchanged.
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    const GlyphId l = *font->glyph_for_char(U'l');
+    GlyphRasterizer rasterizer(*font);
+    for (Hinting hinting : {Hinting::Full, Hinting::Auto, Hinting::None}) {
+        GlyphRenderOptions o;
+        o.size_px = 20;
+        o.hinting = hinting;
+        const Ink plain = render(rasterizer, l, o);
+        o.bold = 1.0 / 20;   // 2d = 1 px
+        const Ink bold = render(rasterizer, l, o);
+        ASSERT_EQ(bold.box.left, plain.box.left);
+        ASSERT_EQ(bold.box.width, plain.box.width + 1);
+        const int py = plain.box.height / 2, by = py + (bold.box.top - plain.box.top);
+        std::vector<int> expected, got;
+        for (int x = 0; x < plain.box.width; ++x) expected.push_back(plain.mask.at(x, py));
+        for (int x = 0; x < bold.box.width; ++x) got.push_back(bold.mask.at(x, by));
+        const auto full = std::find(expected.begin(), expected.end(), 255);
+        ASSERT_NE(full, expected.end());
+        expected.insert(full, 255);
+        // Coverage is 8-bit: an edge pixel may round one step either way.
+        ASSERT_EQ(got.size(), expected.size()) << static_cast<int>(hinting);
+        for (std::size_t x = 0; x < got.size(); ++x)
+            EXPECT_NEAR(got[x], expected[x], 1) << static_cast<int>(hinting) << " column " << x;
+    }
 }
 
 TEST(SyntheticBold, ZeroBoldDrawsBitForBitAsWithoutIt) {
