@@ -144,9 +144,9 @@ struct GlyphCacheStats {
 };
 
 // Glyph bitmaps keyed by (font id, glyph id, subpixel bins and every option that changes the
-// pixels: size, hinting, slant, bold, box mode and every FillOptions field but the origin), rendered
-// once and blended many times. The pen offset is quantized to kSubpixelBins bins per axis. Memory is
-// bounded by max_bytes (least recently used entries are evicted).
+// pixels: size, hinting, slant, bold, box mode and every FillOptions field but the origin),
+// rendered once and blended many times. The pen offset is quantized to kSubpixelBins bins per
+// axis. Memory is bounded by max_bytes (least recently used entries are evicted).
 // A pointer from get() stays valid until the next get() or clear().
 inline constexpr int kSubpixelBins = 4;
 class GlyphCache {
