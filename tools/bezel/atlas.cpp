@@ -41,6 +41,7 @@ struct AtlasArgs {
     FontArgs font;
     FontListArgs fonts;         // --font, --fallback
     double slant = 0;           // --font-slant
+    double bold = 0;            // --font-bold
     std::string chars;
     std::string output_file;   // -o: the PNG
     std::string json_file;     // --json (default: stdout)
@@ -97,6 +98,7 @@ int run_atlas(AtlasArgs& args) {
     options.size_px = args.font.size_px;
     options.hinting = hinting_of(args.font);
     options.slant = args.slant;
+    options.bold = args.bold;
 
     std::vector<Entry> entries;
     std::vector<AtlasRect> sizes;
@@ -191,6 +193,7 @@ Command add_atlas_command(CLI::App& app) {
     add_font_args(*cmd, args->font);
     add_font_list_options(*cmd, args->fonts);
     add_slant_option(*cmd, args->slant);
+    add_bold_option(*cmd, args->bold);
     cmd->add_option("CHARS", args->chars,
                     "The characters, as --chars; a lone word that is no font file is CHARS");
     cmd->add_option("--chars", args->chars, "The characters (UTF-8); repeats are packed once")

@@ -25,6 +25,7 @@ struct GlyphArgs {
     FontArgs font;
     FontListArgs fonts;         // --font, --fallback
     double slant = 0;           // --font-slant
+    double bold = 0;            // --font-bold
     GlyphChoice which;
     std::string format, output_file;
     std::string fill = "nonzero", lcd, offset, flatten = "wang", overlap = "auto";
@@ -88,12 +89,17 @@ int run_glyph(GlyphArgs& args) {
     options.size_px = args.font.size_px;
     options.hinting = hinting_of(args.font);
     options.slant = args.slant;
+    options.bold = args.bold;
     options.offset_px = *offset;
     options.box = GlyphBoxMode::FreeType;   // the JSON contract: FT_Render_Glyph's box
     FillOptions& fill = options.fill;
     fill.format = args.lcd.empty() ? CoverageFormat::Gray : CoverageFormat::Lcd;
     fill.lcd_order = args.lcd == "bgr" ? LcdOrder::Bgr : LcdOrder::Rgb;
     fill.rule = args.fill == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
+    if (args.bold > 0 && fill.rule != FillRule::NonZero)
+        return fail_usage("--font-bold needs --fill nonzero: the emboldened outline overlaps "
+                          "itself, and even-odd would cut the overlaps out",
+                          kGlyphCommand);
     fill.overlap = args.overlap == "accurate" ? OverlapMode::Accurate : OverlapMode::Accumulate;
     fill.flatten.tolerance_px = args.tolerance_px;
     fill.flatten.method = method_named(args.flatten);
@@ -199,6 +205,7 @@ Command add_glyph_command(CLI::App& app) {
     add_font_args(*cmd, args->font);
     add_font_list_options(*cmd, args->fonts);
     add_slant_option(*cmd, args->slant);
+    add_bold_option(*cmd, args->bold);
     add_glyph_choice(*cmd, args->which, "Each character of a string (cmap, no shaping)");
     cmd->add_option("-O,--output-format", args->format,
                     "ascii, json, png or pgm; default: from the -o file's extension, else ascii")

@@ -46,6 +46,7 @@ struct RenderArgs {
     FontArgs font;
     FontListArgs fonts;         // --font, --fallback
     double slant = 0;           // --font-slant
+    double bold = 0;            // --font-bold
     std::string text;           // TEXT or --text
     std::string text_file;      // --text-file
     std::string features;       // --features
@@ -210,6 +211,7 @@ int run_render(RenderArgs& args) {
     options.shape.size_px = args.font.size_px;
     options.hinting = hinting_of(args.font);
     options.slant = args.slant;
+    options.shape.bold = args.bold;
     auto features = parse_features(args.features);
     if (!features) return fail_usage("--features: " + features.error().message, kRenderCommand);
     options.shape.features = std::move(*features);
@@ -241,6 +243,10 @@ int run_render(RenderArgs& args) {
                                   "--rendering linear mixes exact coverage",
                                   kRenderCommand);
 
+    if (args.stroke_px > 0 && args.bold > 0)
+        return fail_usage("--font-bold does not combine with --stroke: the outline of the "
+                          "emboldened ink is not drawn (stroke the plain glyphs, or fill bold ones)",
+                          kRenderCommand);
     if (args.stroke_px > 0 && options.format != CoverageFormat::Gray)
         return fail_usage("--stroke draws gray coverage; it does not combine with --lcd", kRenderCommand);
     if (options.format == CoverageFormat::Lcd && bg->a != 255)
@@ -333,6 +339,7 @@ Command add_render_command(CLI::App& app) {
     add_font_args(*cmd, args->font);
     add_font_list_options(*cmd, args->fonts);
     add_slant_option(*cmd, args->slant);
+    add_bold_option(*cmd, args->bold);
     cmd->add_option("TEXT", args->text, "The text (UTF-8); default: a sample paragraph");
     cmd->add_option("--text", args->text, "The text, as hb-view's --text")->type_name("STRING");
     cmd->add_option("--text-file", args->text_file, "Read the text from a file ('-': stdin)")

@@ -74,6 +74,11 @@ inline constexpr double kMaxSyntheticSlant = 1.0;
 // text draws from a handful; a page whose clusters would need more is refused rather than
 // opening fonts without end.
 inline constexpr std::size_t kMaxCollectionFonts = 64;
+// Largest synthetic bold (GlyphRenderOptions::bold, ShapeOptions::bold), a fraction of the em:
+// the ink grows by an eighth of the em on each side, which already fills the counter of a text
+// face's lowercase o (about a quarter of the em wide); past it a glyph is a blob, not a bolder
+// glyph. (HarfBuzz calls 0.01 to 0.05 typical; FreeType's FT_GlyphSlot_Embolden uses 1/24.)
+inline constexpr double kMaxSyntheticBold = 0.25;
 
 // --- intersect --------------------------------------------------------------------------------
 // Deepest subdivision: parameter width 2⁻ᵏ. Pairs that still cannot be separated or isolated at

@@ -30,7 +30,9 @@ struct TextRenderOptions {
     // its pen, since its stems were fitted to the grid at a whole-pixel origin; None and Light
     // keep subpixel pen positions.
     Hinting hinting = Hinting::None;
-    double slant = 0;   // synthetic slant of every glyph, as GlyphRenderOptions::slant
+    // Synthetic slant of every glyph, as GlyphRenderOptions::slant. (Synthetic bold is
+    // shape.bold: it widens the advances too, so it lives with the shaping it changes.)
+    double slant = 0;
     Rgba8 foreground{0, 0, 0, 255};
     Rgba8 background{255, 255, 255, 255};
     // How coverage becomes ink (image.hpp): by default Perceptual, text as heavy as renderers

@@ -154,6 +154,7 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     glyph.fill.lcd_order = options.lcd_order;
     glyph.hinting = options.hinting;
     glyph.slant = options.slant;
+    glyph.bold = options.shape.bold;   // the layout's advances were widened by the same value
     const bool whole_pixel_pen = hints_horizontally(options.hinting);
     // The cached glyph at g's pen, with its top-left pixel; null for a pen far off the page (a
     // huge margin is refused by the size check above; this guards the int conversions) or an
