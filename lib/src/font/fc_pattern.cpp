@@ -1,6 +1,7 @@
 // fontconfig patterns: parsing with errors that name the element, and a font pattern's FontSource.
 #include "font/fc_pattern.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
