@@ -10,6 +10,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -311,6 +312,36 @@ TEST(SystemFonts, ConfigurationFileThatCannotBeLoadedIsAnErrorNamingIt) {
     ASSERT_FALSE(broken.ok());
     EXPECT_NE(broken.error().message.find(bad.string() + ": fontconfig cannot load"),
               std::string::npos) << broken.error().message;
+}
+
+TEST(SystemFonts, SeparateObjectsOnThreadsAnswerAsOneThread) {
+    // The threading contract: one SystemFonts per thread, each loading its own configuration.
+    TestConfig config(kScriptFolders);
+    const std::vector<std::u32string> clusters = {U"\u06C1", U"\u0915\u094D\u0937", U"\u4E00",
+                                                  U"a", U"\u05D0", U"\U0001F600\uFE0F"};
+    auto answers = [&](std::vector<std::string>& out) {
+        auto fonts = SystemFonts::open({config.file()});
+        if (!fonts.ok()) {
+            out.push_back("error: " + fonts.error().message);
+            return;
+        }
+        for (int round = 0; round < 20; ++round) {
+            for (const std::u32string& c : clusters) {
+                FallbackQuery q{round % 2 ? "Cantarell" : "Noto Sans Hebrew", c};
+                q.prefer_colour = round % 3 == 0;
+                out.push_back(fallback_name(*fonts, q));
+            }
+        }
+        auto m = fonts->match("Cantarell");
+        out.push_back(m.ok() ? short_name(*m) : m.error().message);
+    };
+    std::vector<std::string> expected;
+    answers(expected);
+    std::vector<std::vector<std::string>> got(4);
+    std::vector<std::thread> threads;
+    for (auto& g : got) threads.emplace_back(answers, std::ref(g));
+    for (std::thread& t : threads) t.join();
+    for (const auto& g : got) EXPECT_EQ(g, expected);
 }
 
 TEST(SystemFonts, DefaultIgnorableIsUnicodesProperty) {
