@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -133,6 +134,37 @@ TEST_F(SystemFontsTest, PatternThatDoesNotParseIsAnErrorNamingIt) {
                            "DejaVu Sans-12:oblique", "", "monospace"}) {
         EXPECT_TRUE(fonts.match(ok).ok()) << ok;
     }
+}
+
+TEST_F(SystemFontsTest, RandomPatternsGiveAFontOrAOneLineError) {
+    // Pieces of fontconfig's syntax in random order, fixed seed: every pattern either matches or
+    // is refused with one line naming it, and fallback agrees with match on which.
+    const std::vector<std::string> pieces = {"DejaVu Sans", "Cantarell", ":", "=", "_", ",", "-", "\\",
+                                             "weight", "bold", "size", "12", "abc", "lang", "ar",
+                                             "style", "Oblique", "[1 2]", "slant", "colour", "x"};
+    std::mt19937 rng(35);
+    std::size_t matched = 0, refused = 0;
+    for (int i = 0; i < 500; ++i) {
+        std::string pattern;
+        const int n = 1 + static_cast<int>(rng() % 8);
+        for (int k = 0; k < n; ++k) pattern += pieces[rng() % pieces.size()];
+        auto m = fonts.match(pattern);
+        auto f = fonts.fallback({pattern, U"a"});
+        ASSERT_EQ(m.ok(), f.ok()) << pattern;
+        if (m.ok()) {
+            ++matched;
+            EXPECT_FALSE(m->file.empty()) << pattern;
+            continue;
+        }
+        ++refused;
+        const std::string& e = m.error().message;
+        EXPECT_EQ(e.rfind("font pattern '" + pattern + "': ", 0), 0u) << e;
+        EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+    }
+    // Both outcomes occur, so the sweep tests something.
+    EXPECT_GT(matched, 50u);
+    EXPECT_GT(refused, 50u);
+    EXPECT_LE(fonts.stats().lists, kMaxSystemFontLists);
 }
 
 TEST_F(SystemFontsTest, FallbackFindsTheOnlyFontCoveringACluster) {

@@ -51,6 +51,34 @@ std::vector<Element> elements_after_family(const std::string& pattern) {
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
+// The properties of fontconfig.h (2.14's FC_* names). fontconfig adds every name it is asked
+// about (FcNameGetObjectType, FcNameParse) to a process-wide table it never shrinks, so a name
+// outside this list is refused before fontconfig sees it: garbage patterns cannot grow memory.
+constexpr const char* kProperties[] = {
+    "family",     "style",          "slant",          "weight",       "size",
+    "aspect",     "pixelsize",      "spacing",        "foundry",      "antialias",
+    "hinting",    "hintstyle",      "verticallayout", "autohint",     "globaladvance",
+    "width",      "file",           "index",          "ftface",       "rasterizer",
+    "outline",    "scalable",       "color",          "variable",     "scale",
+    "symbol",     "dpi",            "rgba",           "minspace",     "source",
+    "charset",    "lang",           "fontversion",    "fullname",     "familylang",
+    "stylelang",  "fullnamelang",   "capability",     "fontformat",   "embolden",
+    "embeddedbitmap", "decorative", "lcdfilter",      "fontfeatures", "fontvariations",
+    "namelang",   "prgname",        "hash",           "postscriptname", "fonthashint",
+    "order",      "charwidth",      "charheight",     "matrix",
+};
+
+// A property this fontconfig knows (one of the list that its own table types).
+bool known_property(const std::string& name) {
+    for (const char* p : kProperties) {
+        if (name == p) {
+            const FcObjectType* type = FcNameGetObjectType(p);
+            return type != nullptr && type->type != FcTypeUnknown;
+        }
+    }
+    return false;
+}
+
 // "wght=563,wdth=100" (fontconfig writes FC_FONT_VARIATIONS so; users may write it with spaces
 // around the parts): settings in order. A part that is not tag=number is an Error.
 Expected<std::vector<VariationSetting>> parse_variations(const std::string& text,
@@ -88,9 +116,7 @@ Expected<FcPatternPtr> parse_pattern(const std::string& pattern) {
     const std::string what = "font pattern " + quoted(pattern);
     if (pattern.find('\0') != std::string::npos) return Error{what + ": contains a NUL byte"};
     for (const Element& e : elements_after_family(pattern)) {
-        // fontconfig registers a name it does not know as a property of unknown type.
-        const FcObjectType* type = e.has_value ? FcNameGetObjectType(e.name.c_str()) : nullptr;
-        if (e.has_value && (type == nullptr || type->type == FcTypeUnknown)) {
+        if (e.has_value && !known_property(e.name)) {
             return Error{what + ": unknown property " + quoted(e.name) +
                          " (fontconfig's are family, style, weight, slant, width, size, lang, "
                          "spacing, color, variable, ...)"};
