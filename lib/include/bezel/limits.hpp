@@ -56,6 +56,12 @@ inline constexpr double kMaxFontSizePx = 16384.0;
 // Largest face index accepted: FreeType keeps the face in the low 16 bits of its index (the
 // high bits select a named instance of a variable font, which bezel does through variations).
 inline constexpr int kMaxFaceIndex = 0xFFFF;
+// Most sorted fallback lists one SystemFonts keeps (bezel/system_fonts.hpp), one per (pattern,
+// prefer_colour, require_outlines) asked; the least recently used is dropped past it. A page uses
+// a few families; each list is a sort of every font of the configuration (milliseconds with
+// thousands of fonts) and holds at most one reference per font, so 32 lists save every repeat
+// sort of a real document while a caller cycling through patterns cannot grow memory without end.
+inline constexpr std::size_t kMaxSystemFontLists = 32;
 
 // --- text -------------------------------------------------------------------------------------
 // Longest text one shape/layout/render call accepts, in bytes of UTF-8 (16 MiB). Past it, Error.
