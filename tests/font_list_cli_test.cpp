@@ -2,6 +2,8 @@
 // info --coverage; each page equals the library's over the same FontCollection.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -119,6 +121,85 @@ TEST(FontListCli, AFaceOfACollectionIsFileHashIndex) {
     ASSERT_EQ(run.exit_code, 0) << run.err;
     auto j = nlohmann::json::parse(run.out);
     EXPECT_EQ(j["fonts"][1], kEdgeTtc);
+}
+
+// A fontconfig configuration of some fonts-test folders, with its cache in `dir`: system fonts
+// that are the same on every machine.
+std::string write_fontconfig(const TempDir& dir, const std::vector<std::string>& folders) {
+    std::string conf = "<?xml version=\"1.0\"?>\n<!DOCTYPE fontconfig SYSTEM \"fonts.dtd\">\n<fontconfig>\n";
+    for (const std::string& f : folders) conf += "  <dir>" + kFonts + "/" + f + "</dir>\n";
+    conf += "  <cachedir>" + (dir.path() / "fc-cache").string() + "</cachedir>\n</fontconfig>\n";
+    const std::string file = (dir.path() / "fonts.conf").string();
+    std::ofstream(file) << conf;
+    return "FONTCONFIG_FILE=" + file;
+}
+
+TEST(FontListCli, SystemFontsDrawWhatTheListLacksUnlessTurnedOff) {
+    TempDir dir;
+    const std::string env = write_fontconfig(dir, {"noto-arabic", "noto-devanagari"});
+    // Cantarell alone has no Devanagari: the system's Noto Sans Devanagari draws it.
+    auto run = run_bezel({"info", "--font", kCantarell, "--coverage",
+                          "a\u0928\u092E", "-O", "json"},
+                         dir.path(), {env});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    auto j = nlohmann::json::parse(run.out);
+    ASSERT_EQ(j["fonts"].size(), 2u);
+    EXPECT_EQ(j["fonts"][1], kDevanagari);
+    EXPECT_EQ(j["coverage"][1]["font"], 1);
+    EXPECT_EQ(j["missing"], 0);
+    // The render draws it (no warning); with --no-system-fonts it is missing.
+    auto drawn = run_bezel({"render", kCantarell, "--text", "a\u0928\u092E", "-o", "a.png"},
+                           dir.path(), {env});
+    ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
+    EXPECT_EQ(drawn.err, "");
+    auto off = run_bezel({"render", kCantarell, "--text", "a\u0928\u092E", "--no-system-fonts",
+                          "-o", "b.png"},
+                         dir.path(), {env});
+    ASSERT_EQ(off.exit_code, 0) << off.err;
+    EXPECT_NE(off.err.find("no glyph for U+0928"), std::string::npos) << off.err;
+    // glyph takes the character from the system font too.
+    auto glyph = run_bezel({"glyph", kCantarell, "--char", "\u0928", "-O", "json", "--font-size", "8"},
+                           dir.path(), {env});
+    ASSERT_EQ(glyph.exit_code, 0) << glyph.err;
+    EXPECT_EQ(nlohmann::json::parse(glyph.out)[0]["font"], kDevanagari);
+}
+
+TEST(FontListCli, FontFamilyPicksAnInstalledFont) {
+    TempDir dir;
+    const std::string env = write_fontconfig(dir, {"cantarell", "dejavu-sans", "noto-hebrew"});
+    auto run = run_bezel({"info", "--font-family", "Cantarell", "--coverage", "a", "-O", "json"},
+                         dir.path(), {env});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    auto j = nlohmann::json::parse(run.out);
+    EXPECT_EQ(j["file"], kCantarell);
+    // The page equals one drawn from the file itself.
+    auto by_family = run_bezel({"render", "--font-family", "Cantarell", "--text", "Hamburg",
+                                "-o", "family.pgm"},
+                               dir.path(), {env});
+    auto by_file = run_bezel({"render", kCantarell, "--text", "Hamburg", "-o", "file.pgm"},
+                             dir.path(), {env});
+    ASSERT_EQ(by_family.exit_code, 0) << by_family.err;
+    ASSERT_EQ(by_file.exit_code, 0) << by_file.err;
+    EXPECT_TRUE(slurp(dir.path() / "family.pgm") == slurp(dir.path() / "file.pgm"));
+    // A pattern fontconfig rejects is an error naming it.
+    auto bad = run_bezel({"render", "--font-family", "Cantarell:blod", "--text", "a", "-o", "x.png"},
+                         dir.path(), {env});
+    EXPECT_EQ(bad.exit_code, 1);
+    EXPECT_NE(bad.err.find("Cantarell:blod"), std::string::npos) << bad.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.png"));
+}
+
+TEST(FontListCli, ABareEnvironmentStillDrawsWithTheBundledFonts) {
+    // The tests' default: a fontconfig configuration with no fonts at all.
+    TempDir dir;
+    auto run = run_bezel({"render", "--text", "Hi \u0928", "-o", "bare.png"}, dir.path());
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.err.find("no glyph for U+0928"), std::string::npos) << run.err;
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / "bare.png"));
+    auto family = run_bezel({"render", "--font-family", "Noto Sans", "--text", "a", "-o", "f.png"},
+                            dir.path());
+    EXPECT_EQ(family.exit_code, 1);
+    EXPECT_NE(family.err.find("--font-family"), std::string::npos) << family.err;
 }
 
 TEST(FontListCli, BadListsAreClearErrors) {

@@ -56,13 +56,19 @@ CliRun run_program(const std::string& exe, const std::vector<std::string>& args,
         ::posix_spawn_file_actions_addopen(&actions, 1, out_file.c_str(), mode, 0600) == 0 &&
         ::posix_spawn_file_actions_addopen(&actions, 2, err_file.c_str(), mode, 0600) == 0 &&
         ::posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str()) == 0;
-    // The environment: this process's, with `env`'s NAME=VALUE entries added or replacing.
+    // The environment: this process's, with `env`'s NAME=VALUE entries added or replacing, and
+    // a bare fontconfig configuration unless `env` names one.
     std::vector<std::string> variables = env;
+#ifdef BEZEL_BARE_FONTCONFIG
+    bool fontconfig_given = false;
+    for (const std::string& v : env) fontconfig_given |= v.rfind("FONTCONFIG_FILE=", 0) == 0;
+    if (!fontconfig_given) variables.push_back("FONTCONFIG_FILE=" BEZEL_BARE_FONTCONFIG);
+#endif
     for (char** e = environ; *e != nullptr; ++e) {
         const std::string entry = *e;
         const std::string name = entry.substr(0, entry.find('=') + 1);
         bool replaced = false;
-        for (const std::string& v : env) replaced |= v.compare(0, name.size(), name) == 0;
+        for (const std::string& v : variables) replaced |= v.compare(0, name.size(), name) == 0;
         if (!replaced) variables.push_back(entry);
     }
     std::vector<char*> envp;

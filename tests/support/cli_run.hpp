@@ -18,7 +18,9 @@ struct CliRun {
 
 // Runs `exe args…` with the working directory `cwd`, stdin from /dev/null, stdout and stderr
 // captured through files in `cwd` (removed afterwards), the environment this process's plus `env`
-// (NAME=VALUE entries, each replacing a variable of that name). Never goes through a shell.
+// (NAME=VALUE entries, each replacing a variable of that name). FONTCONFIG_FILE is a bare
+// configuration (no system fonts: results independent of the machine) unless `env` sets it.
+// Never goes through a shell.
 CliRun run_program(const std::string& exe, const std::vector<std::string>& args,
                    const std::filesystem::path& cwd, const std::vector<std::string>& env = {});
 

@@ -51,6 +51,14 @@ void add_font_list_options(CLI::App& cmd, FontListArgs& list) {
                    "Fonts after the others, comma-separated, for characters they lack")
         ->type_name("FILE,...")
         ->check(parse_check(split_font_names, "fallback"));
+    cmd.add_option("--font-family", list.family,
+                   "An installed font by family or fontconfig pattern (\"Noto Serif:bold\", "
+                   "\"monospace\"), as fc-match picks it; first in the list unless FONT or --font "
+                   "is given")
+        ->type_name("PATTERN");
+    cmd.add_flag("--no-system-fonts", list.no_system_fonts,
+                 "Do not look in the system's fonts (fontconfig) for characters no listed font "
+                 "has: draw them as the first font's .notdef");
 }
 
 bool font_file_given(const FontArgs& font, const CLI::App& cmd) {
@@ -58,21 +66,32 @@ bool font_file_given(const FontArgs& font, const CLI::App& cmd) {
 }
 
 bool has_font_list(const FontListArgs& list) {
-    return !list.fonts.empty() || !list.fallback.empty();
+    return !list.fonts.empty() || !list.family.empty() || !list.fallback.empty();
 }
 
 Expected<std::vector<FontSource>> font_sources(const FontArgs& font, const FontListArgs& list,
                                                bool font_given,
                                                std::vector<VariationSetting> first_variations) {
     std::vector<FontSource> out;
-    if (font_given || list.fonts.empty()) out.push_back({font.file, font.face_index, {}});
+    if (font_given || (list.fonts.empty() && list.family.empty()))
+        out.push_back({font.file, font.face_index, {}});
     for (const std::string& f : list.fonts) out.push_back(font_source_named(f));
+    if (!list.family.empty()) {
+        auto system = SystemFonts::open();
+        if (!system) return system.error();
+        auto matched = system->match(list.family);
+        if (!matched) return Error{"--font-family: " + matched.error().message};
+        out.push_back(std::move(*matched));
+    }
     if (!list.fallback.empty()) {
         auto names = split_font_names(list.fallback);
         if (!names) return Error{"--fallback " + names.error().message};
         for (const std::string& name : *names) out.push_back(font_source_named(name));
     }
-    out.front().variations = std::move(first_variations);
+    // A --font-family match may come with coordinates (a named instance): the command line's
+    // go after them, and a later setting of an axis wins.
+    std::vector<VariationSetting>& v = out.front().variations;
+    v.insert(v.end(), first_variations.begin(), first_variations.end());
     return out;
 }
 
@@ -85,6 +104,10 @@ Expected<FontCollection> open_font_list(const FontArgs& font, const FontListArgs
     if (!fonts) return fonts.error();
     for (std::size_t i = 0; i < fonts->size(); ++i)
         if (Status s = fonts->font(i).require_outlines(); !s) return s.error();
+    fonts->set_outlines_only(true);
+    if (!list.no_system_fonts)
+        fonts->set_fallback(system_fallback(
+            !list.family.empty() ? list.family : fonts->font(0).family_name()));
     return fonts;
 }
 

@@ -1,7 +1,9 @@
 // tools/bezel/font_list.hpp — several fonts for the text commands (render, glyph, atlas, info):
-// --font FILE[#FACE] (repeatable) and --fallback FILE[,FILE...] after FONT. Text is drawn with
-// font fallback: each character (glyph, atlas, info) or grapheme cluster (render) from the first
-// font of the list that has it (bezel/font_collection.hpp).
+// --font FILE[#FACE] (repeatable), --font-family PATTERN (fontconfig) and --fallback
+// FILE[,FILE...] after FONT, then the system's fonts (fontconfig's fallback) unless
+// --no-system-fonts. Text is drawn with font fallback: each character (glyph, atlas) or grapheme
+// cluster (render, info --coverage) from the first font of the list that has it
+// (bezel/font_collection.hpp).
 #pragma once
 
 #include <string>
@@ -17,29 +19,36 @@ namespace bezel::cli {
 
 struct FontListArgs {
     std::vector<std::string> fonts;   // --font, in order
+    std::string family;               // --font-family: a fontconfig pattern
     std::string fallback;             // --fallback, comma-separated
+    bool no_system_fonts = false;     // --no-system-fonts
 };
 
-// Registers --font and --fallback on `cmd`, storing into `list` (which must outlive parsing).
+// Registers --font, --font-family, --fallback and --no-system-fonts on `cmd`, storing into
+// `list` (which must outlive parsing).
 void add_font_list_options(CLI::App& cmd, FontListArgs& list);
 
 // Whether FONT names a font of the command line: given, and not a lone word taken as text
 // (which lone_word_as_text replaces by the bundled font).
 bool font_file_given(const FontArgs& font, const CLI::App& cmd);
 
-// Whether the list names more than FONT.
+// Whether the list names more than FONT (--font, --font-family or --fallback).
 bool has_font_list(const FontListArgs& list);
 
-// The fonts in order: FONT (font.file at font.face_index, with `first_variations`) unless
-// --font was given and FONT was not (`font_given` false: the bundled default or a lone word
-// taken as text); then each --font; then each --fallback. A name FILE#N whose FILE exists and
-// N is a number is face N of a collection. Errors: an empty name in --fallback.
+// The fonts in order: FONT (font.file at font.face_index); each --font; the font fontconfig
+// matches for --font-family; each --fallback. FONT is left out when --font or --font-family was
+// given and FONT was not (`font_given` false: the bundled default or a lone word taken as text).
+// The first font gets `first_variations`. A name FILE#N whose FILE exists and N is a number is
+// face N of a collection. Errors: an empty name in --fallback; a --font-family pattern that
+// fontconfig rejects or no installed font at all.
 Expected<std::vector<FontSource>> font_sources(const FontArgs& font, const FontListArgs& list,
                                                bool font_given,
                                                std::vector<VariationSetting> first_variations);
 
-// Opens font_sources(...). Errors name the file and the reason (no such file, a directory, not
-// a font, a bitmap-only font: the commands draw outlines).
+// Opens font_sources(...) and, unless --no-system-fonts, sets the system fallback
+// (system_fallback: ordered by the --font-family pattern, else the first font's family). Errors
+// name the file and the reason (no such file, a directory, not a font, a bitmap-only font: the
+// commands draw outlines).
 Expected<FontCollection> open_font_list(const FontArgs& font, const FontListArgs& list,
                                         bool font_given,
                                         std::vector<VariationSetting> first_variations);

@@ -15,6 +15,7 @@
 #include "bezel/font.hpp"
 #include "bezel/limits.hpp"
 #include "bezel/shape.hpp"
+#include "bezel/system_fonts.hpp"
 
 namespace bezel {
 
@@ -40,6 +41,14 @@ public:
     virtual ~FallbackSource() = default;
     virtual Expected<std::optional<FontSource>> font_for(const FallbackRequest& request) = 0;
 };
+
+// A fallback source over the system's fonts (SystemFonts::fallback, fontconfig's sorted list
+// for `pattern`: the primary font's family or pattern, which orders the list). The fontconfig
+// configuration is loaded on the first request (about 9 ms with a warm fontconfig cache), so a
+// text every listed font covers never pays for it. A configuration that cannot be loaded, or a
+// pattern fontconfig rejects, is an Error of each request (a warning of the collection).
+std::shared_ptr<FallbackSource> system_fallback(std::string pattern,
+                                                SystemFontsOptions options = {});
 
 class FontCollection {
 public:
@@ -87,7 +96,8 @@ public:
     // bitmaps sets it): a bitmap-only one is then skipped with a warning. Off by default.
     void set_outlines_only(bool outlines_only);
     bool outlines_only() const;
-    // Fonts the fallback named that could not be opened, one message each.
+    // Fonts the fallback named that could not be opened and the fallback's own errors, each
+    // message once.
     const std::vector<std::string>& warnings() const;
     // Records a fallback font that could not be opened (the layout calls it).
     void add_warning(std::string message);

@@ -19,7 +19,41 @@ struct Entry {
     bool colour;
 };
 
+class SystemFallback final : public FallbackSource {
+public:
+    SystemFallback(std::string pattern, SystemFontsOptions options)
+        : pattern_(std::move(pattern)), options_(std::move(options)) {}
+
+    Expected<std::optional<FontSource>> font_for(const FallbackRequest& request) override {
+        if (!fonts_) {
+            if (!failure_.empty()) return Error{failure_};
+            auto opened = SystemFonts::open(options_);
+            if (!opened) {
+                failure_ = "system fonts: " + opened.error().message;
+                return Error{failure_};
+            }
+            fonts_ = std::move(*opened);
+        }
+        FallbackQuery query;
+        query.pattern = pattern_;
+        query.cluster = request.cluster;
+        query.prefer_colour = request.prefer_colour;
+        query.require_outlines = request.outlines_only;
+        return fonts_->fallback(query);
+    }
+
+private:
+    std::string pattern_;
+    SystemFontsOptions options_;
+    std::optional<SystemFonts> fonts_;
+    std::string failure_;   // why the configuration could not be loaded (asked once)
+};
+
 }  // namespace
+
+std::shared_ptr<FallbackSource> system_fallback(std::string pattern, SystemFontsOptions options) {
+    return std::make_shared<SystemFallback>(std::move(pattern), std::move(options));
+}
 
 struct FontCollection::Impl {
     // unique_ptr: a Font keeps its address while the list grows.
@@ -136,6 +170,9 @@ void FontCollection::set_outlines_only(bool outlines_only) {
 bool FontCollection::outlines_only() const { return impl_->outlines_only; }
 const std::vector<std::string>& FontCollection::warnings() const { return impl_->warnings; }
 void FontCollection::add_warning(std::string message) {
+    // A source that fails fails for every cluster: one line each.
+    for (const std::string& w : impl_->warnings)
+        if (w == message) return;
     impl_->warnings.push_back(std::move(message));
 }
 
