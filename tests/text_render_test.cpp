@@ -99,6 +99,39 @@ TEST(TextRenderer, LinesMatchGoldenImages) {
     expect_matches_golden(*image, "cantarell_line_20");
 }
 
+TEST(TextRenderer, MixedScriptsFromAFontListMatchGoldenImages) {
+    // Latin, Arabic, Hebrew, Devanagari, CJK and symbols, each from its own font, wrapped into
+    // lines of different heights; the bidi order and the fallback are both in the picture.
+    const std::string fonts = BEZEL_FONTS_DIR;
+    auto list = FontCollection::open({{kCantarell, 0, {}},
+                                      {fonts + "/noto-arabic/NotoSansArabic-Regular.ttf", 0, {}},
+                                      {fonts + "/noto-hebrew/NotoSansHebrew-Regular.ttf", 0, {}},
+                                      {fonts + "/noto-devanagari/NotoSansDevanagari-Regular.ttf", 0, {}},
+                                      {fonts + "/noto-cjk/NotoSansCJKjp-Subset.otf", 0, {}},
+                                      {kDejaVu, 0, {}}});
+    ASSERT_TRUE(list) << list.error().message;
+    auto renderer = TextRenderer::open(std::move(*list));
+    ASSERT_TRUE(renderer) << renderer.error().message;
+    TextRenderOptions o = line_options(18);
+    auto image = renderer->render(
+        "Hi \u0645\u0631\u062D\u0628\u0627 \u05E9\u05DC\u05D5\u05DD \u0928\u092E\u0938\u094D\u0924\u0947 "
+        "\u65E5\u672C\u8A9E \u2192 \u2211 \u221E",
+        o);
+    ASSERT_TRUE(image) << image.error().message;
+    expect_matches_golden(*image, "mixed_line_18");
+    EXPECT_EQ(renderer->missing_glyphs().count, 0u);
+
+    o.layout.width_px = 150;
+    image = renderer->render(
+        "Text \u05E9\u05DC\u05D5\u05DD 123 \u0627\u0644\u0639\u0631\u0628\u064A\u0629 "
+        "\u0939\u093F\u0928\u094D\u0926\u0940 \u4E2D\u6587\u3068\u65E5\u672C\u8A9E "
+        "\u2264 \u2713 end",
+        o);
+    ASSERT_TRUE(image) << image.error().message;
+    expect_matches_golden(*image, "mixed_wrapped_18");
+    EXPECT_EQ(renderer->missing_glyphs().count, 0u);
+}
+
 TEST(TextRenderer, DefaultRenderingMatchesItsGolden) {
     auto dejavu = TextRenderer::open(kDejaVu);
     ASSERT_TRUE(dejavu) << dejavu.error().message;

@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
     const std::string arabic = kFonts + "/noto-arabic/NotoSansArabic-Regular.ttf";
     const std::string hebrew = kFonts + "/noto-hebrew/NotoSansHebrew-Regular.ttf";
     const std::string devanagari = kFonts + "/noto-devanagari/NotoSansDevanagari-Regular.ttf";
-    const std::string cjk_font = kFonts + "/noto-cjk/NotoSansCJK-subset.otf";
+    const std::string cjk_font = kFonts + "/noto-cjk/NotoSansCJKjp-Subset.otf";
     const bool cjk = std::filesystem::exists(cjk_font);
 
     const std::u32string page = read_page();
