@@ -120,7 +120,7 @@ std::vector<BadInput> catalogue() {
         {"missing --text-file", {"render", kDejaVu, "--text-file", "missing.txt", "-o", "out.png"}, 1, "missing.txt"},
         {"a lone word that looks like a missing font", {"render", "Missing.otf", "-o", "out.png"}, 1, "Missing.otf: no such font file (to use these words as text, give them with --text)"},
         {"unknown hinting mode", {"render", kDejaVu, "--text", "g", "--hinting", "strong", "-o", "out.png"}, 2, "--hinting"},
-        {"vertical direction (not offered)", {"render", kDejaVu, "--text", "g", "--direction", "ttb", "-o", "out.png"}, 2, "expected ltr, rtl or auto"},
+        {"unknown direction", {"render", kDejaVu, "--text", "g", "--direction", "up", "-o", "out.png"}, 2, "--direction 'up': expected ltr, rtl, ttb, btt or auto"},
         {"subpixel text on a transparent page", {"render", kDejaVu, "--text", "g", "--lcd", "rgb", "--background", "transparent", "-o", "out.png"}, 2, "--lcd needs an opaque --background"},
         {"gamma out of range", {"render", kDejaVu, "--text", "g", "--gamma", "0.5", "-o", "out.png"}, 2, "--gamma"},
         {"unknown compression level", {"render", kDejaVu, "--text", "g", "--compression", "best", "-o", "out.png"}, 2, "--compression"},
