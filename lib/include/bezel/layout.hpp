@@ -78,11 +78,12 @@ struct TextLayout {
 // no vhea, or one whose ascender is not beyond its descender); `metrics` is not used. The page
 // is right + left + (columns − 1) · column advance wide and the longest column (or width_px)
 // high, plus the margins. Each run of one script is shaped in the vertical direction: vertical
-// advances (vmtx, else ascender − descender), origins (VORG, else vmtx's side bearing) and the
-// font's `vert` substitutions (brackets, 、。, ー, small kana); Latin and other horizontal
-// scripts stand upright, one glyph under the next, as hb-view draws them (not turned sideways
-// as CSS's text-orientation: mixed would). No bidi: runs keep their logical order down the
-// column (up it for BottomToTop, whose glyphs HarfBuzz reverses).
+// advances (vmtx, else ascender − descender), origins (VORG, else vmtx's side bearing, else
+// HarfBuzz's fallback from the glyph's extents) and the font's `vert` substitutions (brackets,
+// 、。, ー, small kana). Latin and other horizontal scripts stand upright, one glyph under the
+// next, as hb-view draws them (not turned sideways as CSS's text-orientation: mixed would). No
+// bidi: runs keep their logical order down the column (up it for BottomToTop, whose glyphs
+// HarfBuzz reverses).
 //
 // Lines: N line separators make N + 1 lines (an empty text is one empty line); the first
 // baseline is at margin + ascender; spaces at the end of a wrapped line hang (not placed, not

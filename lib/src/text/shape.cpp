@@ -9,8 +9,8 @@
 //
 // Vertical runs (TopToBottom, BottomToTop): hb_font_create's font functions are HarfBuzz's own
 // OpenType ones, which give vertical advances (vmtx; without it the font's ascender − descender)
-// and vertical origins (VORG; else vmtx's top side bearing above the glyph's top; else the
-// ascender, horizontally half the advance). HarfBuzz's offsets then lead from the vertical pen to
+// and vertical origins (horizontally half the glyph's advance; vertically VORG, else vmtx's top
+// side bearing above the glyph's top, else HarfBuzz's fallback). HarfBuzz's offsets then lead from the vertical pen to
 // the glyph's horizontal origin, where its outline is drawn: origin = pen + offset, in bezel's y
 // down as for horizontal runs. Its y advances are negative (y up, the pen goes down) for both
 // vertical directions (BottomToTop reverses the glyph order instead); negated, they are positive.
