@@ -19,3 +19,16 @@ out="$dir/expected.tsv"
   done
 } > "$out.tmp"
 mv "$out.tmp" "$out"
+
+# hb-view's own pictures of two vertical pages (its defaults: 16 px margins, black on white,
+# 8-bit gray PNG) for tests/render_vertical_cli_test.cpp, which renders the same pages with
+# `bezel render --direction ttb|btt --font-size 50` and compares. 50 px puts every CJK origin
+# of this font on a whole pixel (880 and 500 units at 0.05 px a unit), where cairo's rounding
+# of glyph positions to whole pixels loses nothing.
+cjk="$fonts/noto-cjk/NotoSansCJKjp-Subset.otf"
+text=$(mktemp)
+trap 'rm -f "$text"' EXIT
+printf '縦書き、「日本語」。\nあいう（ー）Ab' > "$text"
+hb-view --direction=ttb --font-size=50 --text-file="$text" -o "$dir/hbview_ttb_50.png" "$cjk"
+printf '日本語、\nあいうえ' > "$text"
+hb-view --direction=btt --font-size=50 --text-file="$text" -o "$dir/hbview_btt_50.png" "$cjk"
