@@ -128,6 +128,7 @@ std::string third_party(const std::string& header) {
     if (header == "ft2build.h" || header.rfind("freetype/", 0) == 0) return "FreeType";
     if (header.rfind("hb", 0) == 0 || header.rfind("harfbuzz/", 0) == 0) return "HarfBuzz";
     if (header.rfind("fribidi", 0) == 0) return "FriBidi";
+    if (header.rfind("fontconfig/", 0) == 0) return "fontconfig";
     if (header.rfind("unicode/", 0) == 0) return "ICU";
     if (header == "png.h") return "libpng";
     if (header == "zlib.h") return "zlib";

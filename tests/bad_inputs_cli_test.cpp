@@ -120,6 +120,8 @@ std::vector<BadInput> catalogue() {
         {"missing --text-file", {"render", kDejaVu, "--text-file", "missing.txt", "-o", "out.png"}, 1, "missing.txt"},
         {"a lone word that looks like a missing font", {"render", "Missing.otf", "-o", "out.png"}, 1, "Missing.otf: no such font file (to use these words as text, give them with --text)"},
         {"unknown hinting mode", {"render", kDejaVu, "--text", "g", "--hinting", "strong", "-o", "out.png"}, 2, "--hinting"},
+        {"negative synthetic bold", {"render", kDejaVu, "--text", "g", "--font-bold", "-0.02", "-o", "out.png"}, 2, "--font-bold: -0.02 is not in 0 to 0.25"},
+        {"synthetic bold with outlined text", {"render", kDejaVu, "--text", "g", "--font-bold", "0.02", "--stroke", "1", "-o", "out.png"}, 2, "--font-bold does not combine with --stroke"},
         {"unknown direction", {"render", kDejaVu, "--text", "g", "--direction", "up", "-o", "out.png"}, 2, "--direction 'up': expected ltr, rtl, ttb, btt or auto"},
         {"subpixel text on a transparent page", {"render", kDejaVu, "--text", "g", "--lcd", "rgb", "--background", "transparent", "-o", "out.png"}, 2, "--lcd needs an opaque --background"},
         {"gamma out of range", {"render", kDejaVu, "--text", "g", "--gamma", "0.5", "-o", "out.png"}, 2, "--gamma"},

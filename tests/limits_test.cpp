@@ -193,7 +193,10 @@ TEST(Limits, ImageWiderThankMaxImageDimIsAnError) {
 }
 
 // Crossed elsewhere (not repeated here): the glyph cache's byte bound (glyph_cache_test,
-// StaysWithinItsBoundAcrossManySizes); kMaxTextCodePoints, a CLI limit (bad_inputs_cli_test).
+// StaysWithinItsBoundAcrossManySizes); kMaxTextCodePoints, a CLI limit (bad_inputs_cli_test);
+// kMaxSyntheticBold (synthetic_bold_test, RefusesBoldOutOfRangeAndEvenOddFill);
+// kMaxSystemFontLists (system_fonts_test, ListCacheStaysWithinkMaxSystemFontLists);
+// kMaxCollectionFonts (text_fallback_test, BadListsAreErrorsNamingTheFile).
 // Not crossed by a test, because reaching them is seconds of work under the sanitizers (the
 // fuzz targets run against them instead): kMaxSvgPathPoints and kMaxCubicsPerArc (8 Mi points
 // of arcs), kMaxPathIntersections (2^20 crossings), kMaxIntersectWork, kMaxPathSegmentPairs,

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "bezel/font.hpp"
+#include "bezel/font_collection.hpp"
 #include "bezel/text.hpp"
 
 namespace bezel {
@@ -247,6 +248,28 @@ TEST(VerticalLayout, BottomToTopReadsUpAndStartsAtTheBottom) {
     EXPECT_EQ(a.cluster, std::string("日本語\n").size());
     EXPECT_NEAR(a.y_px, l.glyphs[2].y_px, 1e-9);
     EXPECT_LT(a.x_px, l.glyphs[2].x_px);   // still right to left
+}
+
+// --- Font fallback --------------------------------------------------------------------------
+
+TEST(VerticalLayout, FallbackFontDrawsWhatTheFirstLacksAndColumnsKeepTheFirstFontsWidth) {
+    auto fonts = FontCollection::open({FontSource{kDejaVu, 0, {}}, FontSource{kCjk, 0, {}}});
+    ASSERT_TRUE(fonts) << fonts.error().message;
+    const std::string text = "Ab日本\n語";
+    auto l = layout_text(*fonts, text, vertical(40), LayoutOptions{});
+    ASSERT_TRUE(l) << l.error().message;
+    ASSERT_EQ(l->lines.size(), 2u);
+    ASSERT_EQ(l->glyphs.size(), 5u);
+    const std::uint16_t want[] = {0, 0, 1, 1, 1};   // A b from DejaVu Sans, the ideographs from Noto
+    for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(l->glyphs[i].font, want[i]) << i;
+    // Each run advances by its own font's vertical advances: DejaVu has no vmtx (ascender −
+    // descender, 1.164 em), Noto's ideographs one em.
+    Fixture dejavu = open_setup(kDejaVu);
+    const double latin = lay(dejavu, "Ab", vertical(40)).lines[0].width_px;
+    EXPECT_NEAR(l->lines[0].width_px, latin + 80, 1e-3);
+    // Columns one em apart: DejaVu, the first font, has no vhea (half an em each side).
+    EXPECT_DOUBLE_EQ(l->lines[0].baseline_x_px - l->lines[1].baseline_x_px, 40);
+    EXPECT_DOUBLE_EQ(l->width_px, 80);
 }
 
 // --- Against hb-shape -----------------------------------------------------------------------

@@ -38,7 +38,7 @@ std::vector<std::string> emulator_words() {
 // forked child of a dynamically linked program never reaches exec (qemu 7.2 spins in it), where
 // posix_spawn's clone runs.
 CliRun run_program(const std::string& exe, const std::vector<std::string>& args,
-                   const fs::path& cwd) {
+                   const fs::path& cwd, const std::vector<std::string>& env) {
     const fs::path out_file = fs::absolute(cwd / kOut), err_file = fs::absolute(cwd / kErr);
     CliRun r;
     std::vector<std::string> words = emulator_words();
@@ -56,9 +56,21 @@ CliRun run_program(const std::string& exe, const std::vector<std::string>& args,
         ::posix_spawn_file_actions_addopen(&actions, 1, out_file.c_str(), mode, 0600) == 0 &&
         ::posix_spawn_file_actions_addopen(&actions, 2, err_file.c_str(), mode, 0600) == 0 &&
         ::posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str()) == 0;
+    // The environment: this process's, with `env`'s NAME=VALUE entries added or replacing.
+    std::vector<std::string> variables = env;
+    for (char** e = environ; *e != nullptr; ++e) {
+        const std::string entry = *e;
+        const std::string name = entry.substr(0, entry.find('=') + 1);
+        bool replaced = false;
+        for (const std::string& v : env) replaced |= v.compare(0, name.size(), name) == 0;
+        if (!replaced) variables.push_back(entry);
+    }
+    std::vector<char*> envp;
+    for (std::string& v : variables) envp.push_back(v.data());
+    envp.push_back(nullptr);
     pid_t pid = -1;
     const int spawned =
-        ready ? ::posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ) : -1;
+        ready ? ::posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), envp.data()) : -1;
     ::posix_spawn_file_actions_destroy(&actions);
     if (spawned != 0) {
         r.exit_code = 127;  // what a shell reports for a program it cannot start

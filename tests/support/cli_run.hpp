@@ -17,9 +17,10 @@ struct CliRun {
 };
 
 // Runs `exe args…` with the working directory `cwd`, stdin from /dev/null, stdout and stderr
-// captured through files in `cwd` (removed afterwards). Never goes through a shell.
+// captured through files in `cwd` (removed afterwards), the environment this process's plus `env`
+// (NAME=VALUE entries, each replacing a variable of that name). Never goes through a shell.
 CliRun run_program(const std::string& exe, const std::vector<std::string>& args,
-                   const std::filesystem::path& cwd);
+                   const std::filesystem::path& cwd, const std::vector<std::string>& env = {});
 
 // Splits a command line written as in a POSIX shell, for tests that read better that way:
 // words separated by spaces, '…' quotes a word verbatim (no escapes, no double quotes).
@@ -49,8 +50,10 @@ private:
 // The CLI binary; tests/CMakeLists.txt defines BEZEL_CLI_PATH for *cli* tests.
 inline std::string cli_path() { return BEZEL_CLI_PATH; }
 // run_program of the bezel binary.
-inline CliRun run_bezel(const std::vector<std::string>& args, const std::filesystem::path& cwd) {
-    return run_program(cli_path(), args, cwd);
+// `env`: NAME=VALUE entries added to (or replacing in) the test's environment.
+inline CliRun run_bezel(const std::vector<std::string>& args, const std::filesystem::path& cwd,
+                        const std::vector<std::string>& env = {}) {
+    return run_program(cli_path(), args, cwd, env);
 }
 #endif
 

@@ -24,6 +24,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "font_args.hpp"
+#include "font_list.hpp"
 #include "missing_glyphs.hpp"
 
 namespace bezel::cli {
@@ -38,7 +39,9 @@ constexpr std::size_t kMaxAtlasChars = 1u << 16;
 struct AtlasArgs {
     PngOptions png;  // --compression
     FontArgs font;
+    FontListArgs fonts;         // --font, --fallback
     double slant = 0;           // --font-slant
+    double bold = 0;            // --font-bold
     std::string chars;
     std::string output_file;   // -o: the PNG
     std::string json_file;     // --json (default: stdout)
@@ -50,6 +53,7 @@ struct Entry {
     char32_t code_point;
     GlyphId gid;
     GlyphBox box;
+    std::size_t font;   // in the font list
 };
 
 int run_atlas(AtlasArgs& args) {
@@ -76,42 +80,64 @@ int run_atlas(AtlasArgs& args) {
                               " distinct characters",
                           kAtlasCommand);
 
-    auto font = open_font(args.font);
-    if (!font) return fail_runtime(font.error().message);
-    GlyphRasterizer rasterizer(*font);
+    // FONT alone opens as it always did (its checks and messages); a list through
+    // open_font_list, FONT's variations on the first font.
+    auto variations = requested_variations(args.font);
+    if (!variations) return fail_runtime(variations.error().message);
+    if (!has_font_list(args.fonts)) {
+        auto font = open_font(args.font);
+        if (!font) return fail_runtime(font.error().message);
+    }
+    auto fonts = open_font_list(args.font, args.fonts, font_file_given(args.font, *args.cmd),
+                                std::move(*variations));
+    if (!fonts) return fail_runtime(fonts.error().message);
+    std::vector<std::unique_ptr<GlyphRasterizer>> rasterizers;
+    for (std::size_t i = 0; i < fonts->size(); ++i)
+        rasterizers.push_back(std::make_unique<GlyphRasterizer>(fonts->font(i)));
     GlyphRenderOptions options;
     options.size_px = args.font.size_px;
     options.hinting = hinting_of(args.font);
     options.slant = args.slant;
+    options.bold = args.bold;
 
     std::vector<Entry> entries;
     std::vector<AtlasRect> sizes;
     MissingGlyphs missing;
     for (char32_t c : distinct) {
-        auto gid = font->glyph_for_char(c);
+        // The first font of the list that maps c (or the fallback's); the first font's .notdef
+        // when none does.
+        auto found = fonts->font_for(std::u32string(1, c));
+        if (!found) return fail_runtime(found.error().message);
+        const std::size_t font = found->value_or(0);
+        std::optional<GlyphId> gid;
+        if (*found) gid = fonts->font(font).glyph_for_char(c);
+        while (rasterizers.size() < fonts->size())
+            rasterizers.push_back(std::make_unique<GlyphRasterizer>(fonts->font(rasterizers.size())));
         if (!gid) {
             if (missing.count == 0) missing.first_code_point = c;
             ++missing.count;
         }
         // Each missing character gets its own copy of .notdef, so every character listed in
         // the JSON has its rectangle.
-        auto box = rasterizer.measure(gid.value_or(0), options);
+        auto box = rasterizers[font]->measure(gid.value_or(0), options);
         if (!box) return fail_runtime(box.error().message);
-        entries.push_back({c, gid.value_or(0), *box});
+        entries.push_back({c, gid.value_or(0), *box, font});
         sizes.push_back({0, 0, box->width, box->height});
     }
-    if (Status s = report_missing_glyphs(font->file(), missing, args.strict); !s)
+    if (Status s = report_missing_glyphs(font_list_names(*fonts), missing, args.strict); !s)
         return fail_runtime(s.error().message);
     auto packing = pack_shelves(sizes, kMaxImageDim);
     if (!packing) return fail_runtime(packing.error().message);
 
     Mask texture(packing->width, packing->height);
+    const bool listed = fonts->size() > 1;
     nlohmann::ordered_json glyphs = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < entries.size(); ++i) {
         const Entry& e = entries[i];
         const AtlasRect& r = packing->rects[i];
         if (r.width > 0) {
-            auto drawn = rasterizer.render(e.gid, options, texture.view().sub(r.x, r.y, r.width, r.height));
+            auto drawn = rasterizers[e.font]->render(e.gid, options,
+                                                     texture.view().sub(r.x, r.y, r.width, r.height));
             if (!drawn) return fail_runtime(drawn.error().message);
         }
         std::string utf8;
@@ -121,14 +147,21 @@ int run_atlas(AtlasArgs& args) {
                           {"y", r.y},              {"width", r.width},
                           {"height", r.height},    {"left", e.box.left},
                           {"top", e.box.top},      {"advance", e.box.advance_px}});
+        if (listed) glyphs.back()["font"] = e.font;
     }
-    nlohmann::ordered_json doc = {{"font", args.font.file},
+    nlohmann::ordered_json doc = {{"font", fonts->source(0).file},
                                   {"size_px", args.font.size_px},
                                   {"hinting", hinting_name(options.hinting)},
                                   {"width", packing->width},
                                   {"height", packing->height},
                                   {"padding", kAtlasPaddingPx},
                                   {"glyphs", std::move(glyphs)}};
+    if (listed) {
+        // The list, which each glyph's "font" indexes.
+        nlohmann::ordered_json files = nlohmann::ordered_json::array();
+        for (std::size_t i = 0; i < fonts->size(); ++i) files.push_back(fonts->source(i).file);
+        doc["fonts"] = std::move(files);
+    }
 
     auto png = encode_png_gray(texture.view(), args.png);
     if (!png) return fail_runtime(args.output_file + ": " + png.error().message);
@@ -158,7 +191,9 @@ Command add_atlas_command(CLI::App& app) {
         "--json atlas.json\n"
         "  bezel atlas 0123456789 -o digits.png --json digits.json");
     add_font_args(*cmd, args->font);
+    add_font_list_options(*cmd, args->fonts);
     add_slant_option(*cmd, args->slant);
+    add_bold_option(*cmd, args->bold);
     cmd->add_option("CHARS", args->chars,
                     "The characters, as --chars; a lone word that is no font file is CHARS");
     cmd->add_option("--chars", args->chars, "The characters (UTF-8); repeats are packed once")

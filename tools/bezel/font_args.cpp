@@ -90,6 +90,15 @@ void add_slant_option(CLI::App& cmd, double& slant) {
         ->check(in_range(-kMaxSyntheticSlant, kMaxSyntheticSlant));
 }
 
+void add_bold_option(CLI::App& cmd, double& bold) {
+    cmd.add_option("--font-bold", bold,
+                   "Synthetic bold, a fraction of the em: the ink grows by X/2 em on every side "
+                   "(the glyph dilated by the stroker's offsets) and each advance by X em, as "
+                   "FreeType's FT_GlyphSlot_Embolden (0.02 to 0.05 is typical; default 0)")
+        ->type_name("X")
+        ->check(in_range(0.0, kMaxSyntheticBold));
+}
+
 Hinting hinting_of(const FontArgs& args) {
     if (args.hinting == "light") return Hinting::Light;
     if (args.hinting == "full") return Hinting::Full;

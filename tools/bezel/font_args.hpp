@@ -28,6 +28,9 @@ struct FontArgs {
 
 // Registers --font-slant X (hb-view's option: GlyphRenderOptions::slant, -1 to 1) on `cmd`.
 void add_slant_option(CLI::App& cmd, double& slant);
+// Registers --font-bold X (hb-view's option: GlyphRenderOptions::bold and ShapeOptions::bold,
+// a fraction of the em, 0 to kMaxSyntheticBold) on `cmd`.
+void add_bold_option(CLI::App& cmd, double& bold);
 
 // The --hinting mode of `args` (add_font_args has checked the name).
 Hinting hinting_of(const FontArgs& args);

@@ -9,6 +9,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "font_args.hpp"
+#include "font_list.hpp"
 #include "glyph_bitmap.hpp"
 #include "glyph_choice.hpp"
 #include "parse_check.hpp"
@@ -22,7 +23,9 @@ enum class GlyphFormat { Ascii, Json, Png, Pnm };
 struct GlyphArgs {
     PngOptions png;  // --compression
     FontArgs font;
+    FontListArgs fonts;         // --font, --fallback
     double slant = 0;           // --font-slant
+    double bold = 0;            // --font-bold
     GlyphChoice which;
     std::string format, output_file;
     std::string fill = "nonzero", lcd, offset, flatten = "wang", overlap = "auto";
@@ -86,31 +89,52 @@ int run_glyph(GlyphArgs& args) {
     options.size_px = args.font.size_px;
     options.hinting = hinting_of(args.font);
     options.slant = args.slant;
+    options.bold = args.bold;
     options.offset_px = *offset;
     options.box = GlyphBoxMode::FreeType;   // the JSON contract: FT_Render_Glyph's box
     FillOptions& fill = options.fill;
     fill.format = args.lcd.empty() ? CoverageFormat::Gray : CoverageFormat::Lcd;
     fill.lcd_order = args.lcd == "bgr" ? LcdOrder::Bgr : LcdOrder::Rgb;
     fill.rule = args.fill == "evenodd" ? FillRule::EvenOdd : FillRule::NonZero;
+    if (args.bold > 0 && fill.rule != FillRule::NonZero)
+        return fail_usage("--font-bold needs --fill nonzero: the emboldened outline overlaps "
+                          "itself, and even-odd would cut the overlaps out",
+                          kGlyphCommand);
     fill.overlap = args.overlap == "accurate" ? OverlapMode::Accurate : OverlapMode::Accumulate;
     fill.flatten.tolerance_px = args.tolerance_px;
     fill.flatten.method = method_named(args.flatten);
 
     if (int settled = settle_glyph_choice(args.which, args.font, *args.cmd, kGlyphCommand))
         return settled;
-    auto font = open_font(args.font);
-    if (!font) return fail_runtime(font.error().message);
-    auto requests = requested_glyphs(args.which, *font);
+    // FONT alone opens as it always did (its checks and messages); a list through
+    // open_font_list, FONT's variations on the first font.
+    auto variations = requested_variations(args.font);
+    if (!variations) return fail_runtime(variations.error().message);
+    if (!has_font_list(args.fonts)) {
+        auto font = open_font(args.font);
+        if (!font) return fail_runtime(font.error().message);
+    }
+    auto fonts = open_font_list(args.font, args.fonts, font_file_given(args.font, *args.cmd), std::move(*variations));
+    if (!fonts) return fail_runtime(fonts.error().message);
+    auto requests = requested_glyphs(args.which, *fonts);
     if (!requests) return fail_runtime(requests.error().message);
-    if (Status s = report_missing_glyphs(font->file(), missing_of(*requests), args.strict); !s)
+    const bool listed = fonts->size() > 1;
+    if (Status s = report_missing_glyphs(font_list_names(*fonts), missing_of(*requests),
+                                         args.strict);
+        !s)
         return fail_runtime(s.error().message);
 
     // Each glyph's outline is loaded once; its box is added to the pixel budget before its
     // pixels are allocated.
-    GlyphRasterizer rasterizer(*font);
+    std::vector<std::unique_ptr<GlyphRasterizer>> rasterizers;   // the fallback may have added fonts
+    for (std::size_t i = 0; i < fonts->size(); ++i)
+        rasterizers.push_back(std::make_unique<GlyphRasterizer>(fonts->font(i)));
+    Font* font = &fonts->font(0);
     std::vector<GlyphBitmap> glyphs;
     std::size_t pixels = 0;
     for (const GlyphRequest& r : *requests) {
+        font = &fonts->font(r.font);
+        GlyphRasterizer& rasterizer = *rasterizers[r.font];
         auto prepared = rasterizer.prepare(r.gid, options);
         if (!prepared) return fail_runtime(prepared.error().message);
         const GlyphBox& box = prepared->box;
@@ -119,8 +143,8 @@ int run_glyph(GlyphArgs& args) {
             return fail_runtime(font->file() + ": the glyphs need more than " +
                                 std::to_string(kMaxGlyphOutputPixels) +
                                 " pixels, the most one call renders; use a smaller --font-size");
-        GlyphBitmap g{r.gid, font->glyph_name(r.gid), r.code_point, box, fill.format,
-                      fill.lcd_order, {}};
+        GlyphBitmap g{r.gid, font->glyph_name(r.gid), r.code_point,
+                      listed ? font->file() : std::string(), box, fill.format, fill.lcd_order, {}};
         const int row_bytes = box.width * g.bytes_per_pixel();
         g.pixels.assign(static_cast<std::size_t>(row_bytes) * static_cast<std::size_t>(box.height), 0);
         const MaskView view{g.pixels.data(), row_bytes, box.height, row_bytes};
@@ -179,7 +203,9 @@ Command add_glyph_command(CLI::App& app) {
         "  bezel glyph font.ttf --text 'Hamburg' --font-size 32 -o hamburg.png\n"
         "  bezel glyph --gid 36 --font-size 12 --lcd rgb --offset 0.25,0 -O json");
     add_font_args(*cmd, args->font);
+    add_font_list_options(*cmd, args->fonts);
     add_slant_option(*cmd, args->slant);
+    add_bold_option(*cmd, args->bold);
     add_glyph_choice(*cmd, args->which, "Each character of a string (cmap, no shaping)");
     cmd->add_option("-O,--output-format", args->format,
                     "ascii, json, png or pgm; default: from the -o file's extension, else ascii")

@@ -39,6 +39,7 @@ struct GlyphBitmap {
     GlyphId gid = 0;
     std::string name;
     std::optional<char32_t> code_point;
+    std::string font;                   // the font file, when the glyphs come from a list
     GlyphBox box;                       // width in display pixels
     CoverageFormat format = CoverageFormat::Gray;
     LcdOrder lcd_order = LcdOrder::Rgb;

@@ -86,6 +86,21 @@ Expected<std::vector<GlyphRequest>> requested_glyphs(const GlyphChoice& choice, 
     return out;
 }
 
+Expected<std::vector<GlyphRequest>> requested_glyphs(const GlyphChoice& choice,
+                                                     FontCollection& fonts) {
+    auto requests = requested_glyphs(choice, fonts.font(0));
+    if (!requests) return requests.error();
+    for (GlyphRequest& r : *requests) {
+        if (!r.missing) continue;
+        auto font = fonts.font_for(std::u32string(1, *r.code_point));
+        if (!font) return font.error();
+        if (!*font) continue;
+        if (auto gid = fonts.font(**font).glyph_for_char(*r.code_point))
+            r = GlyphRequest{*gid, r.code_point, false, **font};
+    }
+    return requests;
+}
+
 MissingGlyphs missing_of(const std::vector<GlyphRequest>& requests) {
     MissingGlyphs missing;
     for (const GlyphRequest& r : requests) {

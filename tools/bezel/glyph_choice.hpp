@@ -9,6 +9,7 @@
 
 #include "bezel/expected.hpp"
 #include "bezel/font.hpp"
+#include "bezel/font_collection.hpp"
 #include "font_args.hpp"
 #include "bezel/layout.hpp"
 
@@ -24,6 +25,7 @@ struct GlyphRequest {
     GlyphId gid = 0;
     std::optional<char32_t> code_point;
     bool missing = false;   // the font maps code_point to nothing: gid is .notdef (0)
+    std::size_t font = 0;   // index in the FontCollection (requested_glyphs over a list)
 };
 
 struct GlyphChoice {
@@ -52,6 +54,11 @@ int settle_glyph_choice(GlyphChoice& choice, FontArgs& font, const CLI::App& cmd
 // TEXT the font does not map become .notdef (gid 0) marked `missing`, for report_missing_glyphs
 // (missing_glyphs.hpp), as hb-view draws them.
 Expected<std::vector<GlyphRequest>> requested_glyphs(const GlyphChoice& choice, const Font& font);
+// The same over a list: each character from the first font that maps it, or the list's
+// fallback source's (FontCollection::font_for: one character at a time, as it is asked for, no
+// cluster or emoji rule), .notdef of the first font when none does; a --gid is the first font's.
+Expected<std::vector<GlyphRequest>> requested_glyphs(const GlyphChoice& choice,
+                                                     FontCollection& fonts);
 
 // The requests marked `missing`, counted, and the first of them.
 MissingGlyphs missing_of(const std::vector<GlyphRequest>& requests);

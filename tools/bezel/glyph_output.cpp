@@ -145,6 +145,7 @@ std::string glyphs_json(const std::vector<GlyphBitmap>& glyphs, const GlyphRende
             o["char"] = utf8;
             o["code_point"] = format_code_point(*g.code_point);
         }
+        if (!g.font.empty()) o["font"] = g.font;
         o["size"] = options.size_px;
         o["left"] = g.box.left;
         o["top"] = g.box.top;

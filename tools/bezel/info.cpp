@@ -6,6 +6,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "font_args.hpp"
+#include "font_list.hpp"
 #include "parse_check.hpp"
 #include "info.hpp"
 
@@ -17,6 +18,7 @@ constexpr const char* kInfoCommand = "bezel info";
 struct InfoArgs {
     std::string file = BEZEL_DEFAULT_FONT;
     int face_index = 0;
+    FontListArgs fonts;        // --font, --fallback (with --coverage)
     std::string coverage;      // --coverage or TEXT
     std::string format;        // -O
     std::string output_file;   // -o
@@ -35,9 +37,18 @@ int run_coverage(const InfoArgs& args, OutputFormat format) {
     FontArgs font_args;
     font_args.file = args.file;
     font_args.face_index = args.face_index;
-    auto font = open_font(font_args);
-    if (!font) return fail_runtime(font.error().message);
-    const CoverageReport report = coverage_of(*font, *text);
+    CoverageReport report;
+    if (has_font_list(args.fonts)) {
+        auto fonts = open_font_list(font_args, args.fonts, font_file_given(font_args, *args.cmd), {});
+        if (!fonts) return fail_runtime(fonts.error().message);
+        auto listed = coverage_of(*fonts, args.coverage);
+        if (!listed) return fail_runtime(listed.error().message);
+        report = std::move(*listed);
+    } else {
+        auto font = open_font(font_args);
+        if (!font) return fail_runtime(font.error().message);
+        report = coverage_of(*font, *text);
+    }
     return write_result(args.output_file, format == OutputFormat::Json
                                               ? format_coverage_json(report)
                                               : format_coverage_text(report));
@@ -55,6 +66,10 @@ int run_info(InfoArgs& args) {
     if (!word) return fail_runtime(word.error().message);
     if (word->has_value()) args.coverage = std::move(**word);
     if (given > 0 || word->has_value()) return run_coverage(args, *format);
+    if (has_font_list(args.fonts))
+        return fail_usage("--font and --fallback go with --coverage (a font list's coverage); "
+                          "describe one font at a time",
+                          kInfoCommand);
     auto info = font_info(args.file, args.face_index);
     if (!info) return fail_runtime(info.error().message);
     const std::string document =
@@ -72,7 +87,8 @@ Command add_info_command(CLI::App& app) {
     cmd->footer(
         "Metrics are font units, y up. A script counts as covered when the cmap maps a few\n"
         "representative letters of it. With --coverage (or TEXT: a lone word that is no font\n"
-        "file), only which of the text's characters the font maps, each once.\n"
+        "file), only which of the text's characters the font maps, each once; with --font or\n"
+        "--fallback, which font of the list draws each (font fallback, as render draws it).\n"
         "Examples:\n"
         "  bezel info\n"
         "  bezel info 'Grüße, Ελλάδα'\n"
@@ -90,6 +106,7 @@ Command add_info_command(CLI::App& app) {
                     "Report which characters of this text (UTF-8) the font maps, instead of the "
                     "description")
         ->type_name("TEXT");
+    add_font_list_options(*cmd, args->fonts);
     cmd->add_option("-O,--output-format", args->format,
                     "text or json; default: from the -o file's extension, else text")
         ->type_name("FORMAT")

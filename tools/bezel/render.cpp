@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 #include <iterator>
 #include <memory>
 
@@ -17,6 +18,7 @@
 #include "commands.hpp"
 #include "draw.hpp"
 #include "font_args.hpp"
+#include "font_list.hpp"
 #include "missing_glyphs.hpp"
 #include "parse_check.hpp"
 #include "render_output.hpp"
@@ -42,7 +44,9 @@ constexpr double kMaxOutlinedPagePixels = double{1 << 26};
 
 struct RenderArgs {
     FontArgs font;
+    FontListArgs fonts;         // --font, --fallback
     double slant = 0;           // --font-slant
+    double bold = 0;            // --font-bold
     std::string text;           // TEXT or --text
     std::string text_file;      // --text-file
     std::string features;       // --features
@@ -132,10 +136,9 @@ Expected<std::string> read_text_file(const std::string& file) {
 Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
                                 const TextRenderOptions& options, double stroke_px,
                                 MissingGlyphs& missing) {
-    Font& font = renderer.font();
-    if (auto set = font.set_variations(options.shape.variations); !set) return set.error();
-    auto layout = layout_text(renderer.shaper(), font.metrics(), text, options.shape,
-                              options.layout);
+    FontCollection& fonts = renderer.fonts();
+    if (auto set = fonts.font(0).set_variations(options.shape.variations); !set) return set.error();
+    auto layout = layout_text(fonts, text, options.shape, options.layout);
     if (!layout) return layout.error();
     missing = find_missing_glyphs(*layout, text);
     const double w = std::ceil(layout->width_px), h = std::ceil(layout->height_px);
@@ -158,6 +161,7 @@ Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
     const bool whole_pixel_pen = hints_horizontally(options.hinting);
     for (PlacedGlyph g : layout->glyphs) {
         if (whole_pixel_pen) g.x_px = std::floor(g.x_px + 0.5);
+        Font& font = fonts.font(g.font);
         auto outline = font.outline(g.gid, OutlineOptions{options.shape.size_px, options.hinting});
         if (!outline) return outline.error();
         // The synthetic slant, as GlyphRasterizer applies it (glyph.hpp).
@@ -208,6 +212,7 @@ int run_render(RenderArgs& args) {
     options.shape.size_px = args.font.size_px;
     options.hinting = hinting_of(args.font);
     options.slant = args.slant;
+    options.shape.bold = args.bold;
     auto features = parse_features(args.features);
     if (!features) return fail_usage("--features: " + features.error().message, kRenderCommand);
     options.shape.features = std::move(*features);
@@ -239,6 +244,10 @@ int run_render(RenderArgs& args) {
                                   "--rendering linear mixes exact coverage",
                                   kRenderCommand);
 
+    if (args.stroke_px > 0 && args.bold > 0)
+        return fail_usage("--font-bold does not combine with --stroke: the outline of the "
+                          "emboldened ink is not drawn (stroke the plain glyphs, or fill bold ones)",
+                          kRenderCommand);
     if (args.stroke_px > 0 && options.format != CoverageFormat::Gray)
         return fail_usage("--stroke draws gray coverage; it does not combine with --lcd", kRenderCommand);
     if (options.format == CoverageFormat::Lcd && bg->a != 255)
@@ -274,7 +283,10 @@ int run_render(RenderArgs& args) {
         text = args.text;
     }
 
-    auto renderer = TextRenderer::open(args.font.file, args.font.face_index);
+    auto fonts = open_font_list(args.font, args.fonts,
+                                font_file_given(args.font, *args.cmd), {});
+    if (!fonts) return fail_runtime(fonts.error().message);
+    auto renderer = TextRenderer::open(std::move(*fonts));
     if (!renderer) return fail_runtime(renderer.error().message);
     const bool gray = options.format == CoverageFormat::Gray && fg->r == fg->g && fg->g == fg->b &&
                       bg->r == bg->g && bg->g == bg->b;
@@ -298,7 +310,10 @@ int run_render(RenderArgs& args) {
     if (!bytes) return fail_runtime(bytes.error().message);
     const MissingGlyphs& missing =
         args.stroke_px > 0 ? outlined_missing : renderer->missing_glyphs();
-    if (Status s = report_missing_glyphs(renderer->font().file(), missing, args.strict); !s)
+    for (const std::string& w : renderer->fonts().warnings())
+        std::cerr << "bezel: warning: " << w << "\n";
+    if (Status s = report_missing_glyphs(font_list_names(renderer->fonts()), missing, args.strict);
+        !s)
         return fail_runtime(s.error().message);
     return write_result(args.output_file,
                         std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()));
@@ -327,7 +342,9 @@ Command add_render_command(CLI::App& app) {
         "  bezel render 'Outline' --font-size 96 --stroke 2 -o outline.png\n"
         "  bezel render -O ansi 'Hello'");
     add_font_args(*cmd, args->font);
+    add_font_list_options(*cmd, args->fonts);
     add_slant_option(*cmd, args->slant);
+    add_bold_option(*cmd, args->bold);
     cmd->add_option("TEXT", args->text, "The text (UTF-8); default: a sample paragraph");
     cmd->add_option("--text", args->text, "The text, as hb-view's --text")->type_name("STRING");
     cmd->add_option("--text-file", args->text_file, "Read the text from a file ('-': stdin)")

@@ -37,6 +37,11 @@ enum class GlyphBoxMode : std::uint8_t {
     FreeType,
 };
 
+// How far the emboldened boundary (GlyphRenderOptions::bold) may lie from the exact dilated
+// one, pixels: the flattening error a fill already has (kDefaultRasterTolerancePx), so the
+// dilation adds no error of a larger order than the rasterizer's own.
+inline constexpr double kSyntheticBoldTolerancePx = kDefaultRasterTolerancePx;
+
 struct GlyphRenderOptions {
     double size_px = 16;
     Hinting hinting = Hinting::None;   // as OutlineOptions::hinting
@@ -44,6 +49,26 @@ struct GlyphRenderOptions {
     // height above the baseline (0.2 leans about 11°; negative leans left), after hinting.
     // |slant| ≤ kMaxSyntheticSlant. The box and the FreeType box are those of the slanted outline.
     double slant = 0;
+    // Synthetic bold (hb-view's --font-bold; HarfBuzz's hb_font_set_synthetic_bold with equal x
+    // and y strengths, not in place), a fraction of the em, 0 ≤ bold ≤ kMaxSyntheticBold.
+    // With d = bold · size_px / 2 (pixels):
+    //   ink      every point within d of the glyph's filled outline becomes ink: the ink dilated
+    //            by a disk of radius d, so stems widen by 2d = bold · size_px, outer corners
+    //            round with radius d and holes (counters) shrink by d on every side;
+    //   place    the dilated ink moves right by d and up by d, so its left edge and its bottom
+    //            stay where the plain glyph's were and it grows to the right and upwards, as
+    //            FreeType's FT_GlyphSlot_Embolden and HarfBuzz place an emboldened glyph;
+    //   advance  box.advance_px grows by bold · size_px (a glyph with no advance, a mark,
+    //            keeps 0), as FT_GlyphSlot_Embolden widens the advance; ShapeOptions::bold
+    //            widens the shaped advances by the same amount.
+    // Order: after hinting (the font's hints fit its own outline to the grid; the dilation then
+    // moves every hinted edge outward by the same d), before the slant (so a stem's horizontal
+    // width grows by exactly bold · size_px whatever the slant, matching the advance: a shear
+    // keeps horizontal distances, while dilating a slanted stem would widen it by 2d/cos θ).
+    // The dilated boundary is within kSyntheticBoldTolerancePx of the exact one (construction
+    // at lib/src/text/synthetic_bold.cpp). Needs FillRule::NonZero; the glyph is then filled
+    // with OverlapMode::Accurate. The box and the FreeType box are those of the dilated outline.
+    double bold = 0;
     // The pen position relative to the glyph's whole-pixel origin, pixels, x right, y DOWN. A
     // toolkit passes the fractional part of its pen position, in [0, 1), and adds the whole part
     // to the box's left / −top itself (GlyphCache quantizes it to kSubpixelBins bins); any finite
@@ -119,9 +144,9 @@ struct GlyphCacheStats {
 };
 
 // Glyph bitmaps keyed by (font id, glyph id, subpixel bins and every option that changes the
-// pixels: size, hinting, slant, box mode and every FillOptions field but the origin), rendered
-// once and blended many times. The pen offset is quantized to kSubpixelBins bins per axis. Memory is
-// bounded by max_bytes (least recently used entries are evicted).
+// pixels: size, hinting, slant, bold, box mode and every FillOptions field but the origin),
+// rendered once and blended many times. The pen offset is quantized to kSubpixelBins bins per
+// axis. Memory is bounded by max_bytes (least recently used entries are evicted).
 // A pointer from get() stays valid until the next get() or clear().
 inline constexpr int kSubpixelBins = 4;
 class GlyphCache {

@@ -13,6 +13,7 @@
 
 #include "bezel/expected.hpp"
 #include "bezel/font.hpp"
+#include "bezel/font_collection.hpp"
 #include "bezel/shape.hpp"
 
 namespace bezel {
@@ -25,10 +26,10 @@ enum class Align : std::uint8_t { Start, Center, End };
 struct LayoutOptions {
     double width_px = 0;       // wrap lines at break opportunities to fit this width; 0 = no wrap
                                // (vertical text: columns wrap at this height)
-    double line_height = 0;    // baseline-to-baseline distance as a multiple of the font's own
+    double line_height = 0;    // baseline-to-baseline distance as a multiple of the fonts' own
                                // (ascender − descender + line gap); 0 means 1.0. Vertical text:
-                               // centre line to centre line, a multiple of the vertical extents
-                               // (Shaper::extents)
+                               // centre line to centre line, a multiple of the first font's
+                               // vertical extents (Shaper::extents)
     double margin_px = 0;      // around the text block on all four sides
     Align align = Align::Start;  // Start is left for LTR paragraphs and right for RTL ones; top
                                  // for TopToBottom columns and bottom for BottomToTop ones
@@ -42,6 +43,7 @@ struct PlacedGlyph {
     GlyphId gid = 0;
     double x_px = 0, y_px = 0;    // origin: pen position + offset
     std::uint32_t cluster = 0;   // byte offset in the whole input text
+    std::uint16_t font = 0;      // index in the FontCollection (0 for the single-font layout)
 };
 
 // A line, or a column of vertical text (then "width" is its length down the page).
@@ -54,6 +56,10 @@ struct LaidOutLine {
                                                     // (its pens' x); 0 for horizontal text
     double width_px = 0;                            // advance width of the line's glyphs
                                                     // (vertical text: their advance height)
+    // The line's extent above and below its baseline: the largest ascender and descender
+    // (descent > 0) of the fonts it uses, the first font always among them. Vertical text: the
+    // first font's vertical extents right (ascent) and left (descent) of the centre line.
+    double ascent_px = 0, descent_px = 0;
 };
 
 struct TextLayout {
@@ -63,47 +69,57 @@ struct TextLayout {
 };
 
 // Shapes and lays out a paragraph: explicit newlines (\n, \r\n, U+2028) start lines; with
-// width_px > 0 lines wrap at break opportunities (after spaces, after hyphens, between ideographs;
-// a word wider than the line is broken between clusters); each line is shaped per run of one
-// script and direction, runs ordered right to left within an RTL paragraph. `metrics` gives line
-// height. Errors as Shaper::shape, plus a negative or non-finite width/margin/line height,
-// metrics with units_per_em ≤ 0.
+// width_px > 0 lines wrap at break opportunities (UAX #14 by ICU, dictionaries for Thai, Lao,
+// Khmer and Myanmar; a word wider than the line is broken between grapheme clusters); each line
+// is shaped per run of one script, direction and font, runs ordered by their bidi levels. `metrics`
+// gives line height. Errors as Shaper::shape, plus a negative or non-finite
+// width/margin/line height, metrics with units_per_em ≤ 0.
 //
 // Vertical text (shape.direction TopToBottom or BottomToTop), as hb-view lays out --direction
 // ttb: each paragraph is one column, or several when width_px > 0 (the column length), wrapped
 // as lines are. Columns stack right to left, the first one's centre line at `right` from the
 // page's right margin, the next one column advance further left; the column advance is
-// (right + left + line gap) · line_height, where right, left and the gap are the vertical
-// extents (Shaper::extents: vhea's ascender and −descender; half an em each when the font has
-// no vhea, or one whose ascender is not beyond its descender); `metrics` is not used. The page
-// is right + left + (columns − 1) · column advance wide and the longest column (or width_px)
-// high, plus the margins. Each run of one script is shaped in the vertical direction: vertical
-// advances (vmtx, else ascender − descender), origins (VORG, else vmtx's side bearing, else
-// HarfBuzz's fallback from the glyph's extents) and the font's `vert` substitutions (brackets,
-// 、。, ー, small kana). Latin and other horizontal scripts stand upright, one glyph under the
-// next, as hb-view draws them (not turned sideways as CSS's text-orientation: mixed would). No
-// bidi: runs keep their logical order down the column (up it for BottomToTop, whose glyphs
-// HarfBuzz reverses).
+// (right + left + line gap) · line_height, where right, left and the gap are the first font's
+// vertical extents (Shaper::extents: vhea's ascender and −descender; half an em each when the
+// font has no vhea, or one whose ascender is not beyond its descender); `metrics` is not used.
+// The page is right + left + (columns − 1) · column advance wide and the longest column (or
+// width_px) high, plus the margins. Each run of one script and font is shaped in the vertical
+// direction: vertical advances (vmtx, else ascender − descender), origins (VORG, else vmtx's
+// side bearing, else HarfBuzz's fallback from the glyph's extents) and the font's `vert`
+// substitutions (brackets, 、。, ー, small kana). Latin and other horizontal scripts stand
+// upright, one glyph under the next, as hb-view draws them (not turned sideways as CSS's
+// text-orientation: mixed would). No bidi: runs keep their logical order down the column (up it
+// for BottomToTop, whose glyphs HarfBuzz reverses).
 //
 // Lines: N line separators make N + 1 lines (an empty text is one empty line); the first
 // baseline is at margin + ascender; spaces at the end of a wrapped line hang (not placed, not
 // counted in its width, but inside its text range). Where a line cuts a word between clusters,
 // both pieces are reshaped (Arabic letters at the cut take their final/initial forms).
 //
-// Bidi is a simplified Unicode Bidirectional Algorithm (UAX #9), without fribidi. Implemented:
-// the paragraph direction from its first strong character (P2/P3) unless shape.direction gives
-// it; strong classes from the Unicode script (letters of Hebrew, Arabic, Syriac, Thaana, N'Ko, …
-// are R, other letters L); marks take the class before them (W1); digits are left-to-right
-// numbers, one level up unless they follow L text (W2, W7, I1, I2); neutrals between equal
-// directions take it, others the paragraph's (N1, N2); runs reordered by level per line (L2).
-// Left out: explicit embeddings, overrides and isolates (LRE…PDI are neutrals), the number
-// separator/terminator rules W3–W6 ("1,000" or "5%" beside Arabic may split), paired brackets
-// (N0), and L1 (trailing whitespace keeps its level; wrapped lines drop it instead). Line
-// breaking is a subset of UAX #14: no dictionary breaking (Thai, Lao, Khmer), no quotation or
-// numeric prefix/postfix classes.
+// Bidi is the full Unicode Bidirectional Algorithm (UAX #9) by GNU FriBidi, per paragraph:
+// explicit embeddings, overrides and isolates, W1–W7, N0–N2, I1–I2, then per line after
+// wrapping L1 (trailing whitespace at the paragraph level) and L2 (runs reordered by level).
+// The paragraph direction is shape.direction, or from the first strong character (P2/P3).
 Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
                                  std::string_view utf8, const ShapeOptions& shape,
                                  const LayoutOptions& layout);
+
+// The same over a list of fonts (font fallback): each grapheme cluster is drawn by the font the
+// rule of font_choice.cpp picks (in short: emoji presentation takes the first colour font that
+// covers it; a cluster of spaces, punctuation or digits stays in the font before it if that font
+// covers it; otherwise the first font of the list that covers it; then the collection's
+// fallback source, whose font is appended; else the first font's .notdef). Runs are shaped per
+// font. shape.variations apply to the first font (after its FontSource's own); the others are
+// shaped at their FontSource's coordinates.
+//
+// Line spacing: a line's ascent and descent are the largest of the fonts it uses, the first
+// font always among them; the first baseline is at margin + its line's ascent, and each next
+// baseline (descent + line gap of the line above + ascent of the line below) × line_height
+// further down, so a line that needs a taller font grows and a page of one font is spaced as
+// layout_text above. Errors as above, plus a font the fallback names that cannot be opened does
+// not fail (FontCollection::warnings) and ICU missing where clusters must be found.
+Expected<TextLayout> layout_text(FontCollection& fonts, std::string_view utf8,
+                                 const ShapeOptions& shape, const LayoutOptions& layout);
 
 // The glyphs of a layout that are .notdef (gid 0): characters the font maps to nothing, drawn as
 // its "missing glyph" box, as hb-view draws them.

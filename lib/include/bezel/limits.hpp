@@ -56,6 +56,12 @@ inline constexpr double kMaxFontSizePx = 16384.0;
 // Largest face index accepted: FreeType keeps the face in the low 16 bits of its index (the
 // high bits select a named instance of a variable font, which bezel does through variations).
 inline constexpr int kMaxFaceIndex = 0xFFFF;
+// Most sorted fallback lists one SystemFonts keeps (bezel/system_fonts.hpp), one per (pattern,
+// prefer_colour, require_outlines) asked; the least recently used is dropped past it. A page uses
+// a few families; each list is a sort of every font of the configuration (milliseconds with
+// thousands of fonts) and holds at most one reference per font, so 32 lists save every repeat
+// sort of a real document while a caller cycling through patterns cannot grow memory without end.
+inline constexpr std::size_t kMaxSystemFontLists = 32;
 
 // --- text -------------------------------------------------------------------------------------
 // Longest text one shape/layout/render call accepts, in bytes of UTF-8 (16 MiB). Past it, Error.
@@ -69,6 +75,16 @@ inline constexpr double kMaxGlyphOffsetPx = 16384.0;
 // Largest synthetic slant (GlyphRenderOptions::slant): 45°; beyond it a glyph leans further than
 // it is tall, which no oblique style does.
 inline constexpr double kMaxSyntheticSlant = 1.0;
+// Most fonts in one FontCollection, listed and found by system fallback together: each holds a
+// FreeType face and a HarfBuzz face (about 100 KiB to a few MiB of tables mapped or parsed), and
+// text draws from a handful; a page whose clusters would need more is refused rather than
+// opening fonts without end.
+inline constexpr std::size_t kMaxCollectionFonts = 64;
+// Largest synthetic bold (GlyphRenderOptions::bold, ShapeOptions::bold), a fraction of the em:
+// the ink grows by an eighth of the em on each side, which already fills the counter of a text
+// face's lowercase o (about a quarter of the em wide); past it a glyph is a blob, not a bolder
+// glyph. (HarfBuzz calls 0.01 to 0.05 typical; FreeType's FT_GlyphSlot_Embolden uses 1/24.)
+inline constexpr double kMaxSyntheticBold = 0.25;
 
 // --- intersect --------------------------------------------------------------------------------
 // Deepest subdivision: parameter width 2⁻ᵏ. Pairs that still cannot be separated or isolated at

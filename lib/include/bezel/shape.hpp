@@ -53,6 +53,13 @@ struct ShapeOptions {
     Direction direction = Direction::Auto;     // Auto: from the text (first strong character)
     std::string script;                        // ISO 15924 ("Arab", "Deva"); "" = from the text
     std::string language;                      // BCP 47 ("ar", "hi"); "" = HarfBuzz's default
+    // Synthetic bold, a fraction of the em, 0 ≤ bold ≤ kMaxSyntheticBold (HarfBuzz's
+    // hb_font_set_synthetic_bold, not in place): every glyph with a nonzero advance has it
+    // widened by bold · size_px along the direction (x for horizontal text, y for vertical), as
+    // FreeType's FT_GlyphSlot_Embolden does; glyphs with no advance (marks) keep 0. Offsets are
+    // HarfBuzz's. The glyphs themselves are emboldened by GlyphRenderOptions::bold (glyph.hpp),
+    // which TextRenderer sets from this field, so a page's advances and ink always agree.
+    double bold = 0;
 };
 
 // One shaped glyph. Advances and offsets in pixels, y DOWN (HarfBuzz's y-up offsets negated).
@@ -91,7 +98,7 @@ public:
 
     // Shapes `utf8` as one run (no line breaking, no bidi reordering across runs). Errors:
     // invalid UTF-8 (offset named), text longer than kMaxTextBytes, size out of range, an
-    // unknown variation axis, a script or language tag that does not parse.
+    // unknown variation axis, a script or language tag that does not parse, a bold out of range.
     Expected<ShapedRun> shape(std::string_view utf8, const ShapeOptions& options);
 
     // The font's extents for options.direction at options.size_px and options.variations, as

@@ -12,6 +12,7 @@
 
 #include "bezel/expected.hpp"
 #include "bezel/font.hpp"
+#include "bezel/font_collection.hpp"
 #include "bezel/glyph.hpp"
 #include "bezel/image.hpp"
 #include "bezel/layout.hpp"
@@ -31,7 +32,9 @@ struct TextRenderOptions {
     // line), except for unhinted vertical text (a TopToBottom or BottomToTop direction), whose
     // glyphs advance along y and keep a quarter pixel there too.
     Hinting hinting = Hinting::None;
-    double slant = 0;   // synthetic slant of every glyph, as GlyphRenderOptions::slant
+    // Synthetic slant of every glyph, as GlyphRenderOptions::slant. (Synthetic bold is
+    // shape.bold: it widens the advances too, so it lives with the shaping it changes.)
+    double slant = 0;
     Rgba8 foreground{0, 0, 0, 255};
     Rgba8 background{255, 255, 255, 255};
     // How coverage becomes ink (image.hpp): by default Perceptual, text as heavy as renderers
@@ -52,11 +55,16 @@ public:
     virtual void rows_final(int rows) = 0;
 };
 
-// Font + Shaper + GlyphRasterizer + GlyphCache for one font file: the one-call text renderer.
+// A FontCollection + a GlyphRasterizer per font + one GlyphCache: the one-call text renderer.
 class TextRenderer {
 public:
-    // Errors name the file; a bitmap-only font is one (Font::require_outlines).
+    // One font file. Errors name the file; a bitmap-only font is one (Font::require_outlines).
     static Expected<TextRenderer> open(const std::string& file, int face_index = 0,
+                                       std::size_t cache_bytes = kDefaultGlyphCacheBytes);
+    // A list of fonts, text drawn with fallback (layout.hpp's layout_text over a collection).
+    // Errors: a bitmap-only font in the list, naming it. The collection is set to take only
+    // fonts with outlines from its fallback source (FontCollection::set_outlines_only).
+    static Expected<TextRenderer> open(FontCollection fonts,
                                        std::size_t cache_bytes = kDefaultGlyphCacheBytes);
     TextRenderer(TextRenderer&&) noexcept;
     TextRenderer& operator=(TextRenderer&&) noexcept;
@@ -64,13 +72,15 @@ public:
     TextRenderer& operator=(const TextRenderer&) = delete;
     ~TextRenderer();
 
-    Font& font();
-    Shaper& shaper();
+    Font& font();        // the first font of the list
+    Shaper& shaper();    // the first font's
+    FontCollection& fonts();
     GlyphCache& cache();
     // The .notdef glyphs (characters the font does not map) of the last render, render_gray or
     // render_gray_streaming call that got as far as laying out the text; all zero before.
     const MissingGlyphs& missing_glyphs() const;
 
+    // ShapeOptions::variations apply to the first font (layout.hpp).
     // Shapes, lays out and draws `utf8` onto a new image sized to the layout (RGBA: background
     // filled, glyphs blended in linear light as image.hpp's blend functions, through the
     // coverage curve of options.coverage). Errors as layout_text and coverage_curve, plus an

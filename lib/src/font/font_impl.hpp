@@ -42,6 +42,13 @@ struct FreeTypeRenderCache {
 
 // A number in an error message ("%g": 6 significant digits, no trailing zeros).
 std::string format_number(double v);
+
+// The design coordinates of named instance `instance` (1-based, as FreeType's face index bits
+// 16–30 and fontconfig's index number it) of face `face_index` of `file`: one setting per axis,
+// in the font's axis order (variations.cpp). Errors name the file: it does not open, has no
+// variation axes, or has fewer instances.
+Expected<std::vector<VariationSetting>> named_instance_coordinates(const std::string& file,
+                                                                  int face_index, int instance);
 }  // namespace font_detail
 
 struct Font::Impl {

@@ -104,4 +104,28 @@ Status Font::set_variations(const std::vector<VariationSetting>& settings) {
     return ok_status();
 }
 
+Expected<std::vector<VariationSetting>> font_detail::named_instance_coordinates(
+    const std::string& file, int face_index, int instance) {
+    Expected<Font> font = Font::open(file, face_index);
+    if (!font) return font.error();
+    auto& impl = font_detail::Access::impl(*font);
+    MmVar mm;
+    load_mm_var(impl.library.get(), impl.face.get(), mm);
+    if (mm.var == nullptr) {
+        return Error{file + ": named instance " + std::to_string(instance) +
+                     ": the font has no variation axes"};
+    }
+    if (instance < 1 || static_cast<FT_UInt>(instance) > mm.var->num_namedstyles) {
+        return Error{file + ": named instance " + std::to_string(instance) + " out of range (1.." +
+                     std::to_string(mm.var->num_namedstyles) + ")"};
+    }
+    const FT_Var_Named_Style& style = mm.var->namedstyle[instance - 1];
+    std::vector<VariationSetting> settings;
+    settings.reserve(mm.var->num_axis);
+    for (FT_UInt i = 0; i < mm.var->num_axis; ++i) {
+        settings.push_back({tag_string(mm.var->axis[i].tag), from_fixed(style.coords[i])});
+    }
+    return settings;
+}
+
 }  // namespace bezel

@@ -31,6 +31,7 @@ struct Key {
     std::uint64_t tolerance_bits;
     std::uint64_t flatness_bits;   // ClassicFlatness's ε (the tolerance's counterpart there)
     std::uint64_t slant_bits;
+    std::uint64_t bold_bits;
     GlyphId gid;
     std::uint8_t bin_x, bin_y, coverage, rule_overlap;   // coverage: format and LCD order
     std::uint8_t outline_box;   // hinting (2 bits), box mode (1) and flattening method (2)
@@ -39,7 +40,7 @@ struct Key {
     bool operator==(const Key& o) const {
         return font_id == o.font_id && size_bits == o.size_bits &&
                tolerance_bits == o.tolerance_bits && flatness_bits == o.flatness_bits &&
-               slant_bits == o.slant_bits &&
+               slant_bits == o.slant_bits && bold_bits == o.bold_bits &&
                gid == o.gid && bin_x == o.bin_x && bin_y == o.bin_y && coverage == o.coverage &&
                rule_overlap == o.rule_overlap && outline_box == o.outline_box &&
                lcd_filter == o.lcd_filter;
@@ -67,6 +68,7 @@ std::uint64_t hash_key(const Key& k) {
     h = mix(h ^ k.tolerance_bits);
     h = mix(h ^ k.flatness_bits);
     h = mix(h ^ k.slant_bits);
+    h = mix(h ^ k.bold_bits);
     std::uint64_t filter = k.outline_box;
     for (std::uint8_t tap : k.lcd_filter) filter = filter << 8 | tap;
     h = mix(h ^ filter);
@@ -204,6 +206,7 @@ Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::u
                   bits(f.flatten.tolerance_px),
                   bits(f.flatten.classic_flatness_epsilon),
                   bits(o.slant),
+                  bits(o.bold),
                   gid,
                   bx,
                   by,

@@ -10,11 +10,14 @@
 //   Tight     columns floor(bx0 + dx) .. ceil(bx1 + dx) of the curves' tight bounds b, rows alike;
 //   FreeType  the control box and the offset in 26.6 fixed point, floor/ceil, as FreeType's
 //             ft_glyphslot_preset_bitmap (y up there: bitmap_top is the ceiling of the box's top).
+// Synthetic bold and slant change the outline before either box is taken (bold first, then the
+// shear: glyph.hpp says why), so both boxes are those of the outline as drawn.
 #include <cmath>
 #include <cstdio>
 #include <string>
 
 #include "bezel/glyph.hpp"
+#include "text/synthetic_bold.hpp"
 
 namespace bezel {
 
@@ -41,6 +44,12 @@ Status check_options(GlyphId gid, const GlyphRenderOptions& o) {
         return Error{glyph_label(gid) + ": slant " + format_number(o.slant) + " is not in -" +
                      format_number(kMaxSyntheticSlant) + " to " +
                      format_number(kMaxSyntheticSlant)};
+    if (!(o.bold >= 0 && o.bold <= kMaxSyntheticBold))   // NaN fails too
+        return Error{glyph_label(gid) + ": bold " + format_number(o.bold) + " is not in 0 to " +
+                     format_number(kMaxSyntheticBold)};
+    if (o.bold > 0 && o.fill.rule != FillRule::NonZero)
+        return Error{glyph_label(gid) + ": synthetic bold needs the nonzero fill rule (the "
+                     "dilated outline overlaps itself)"};
     if (o.fill.origin.x != 0 || o.fill.origin.y != 0)
         return Error{glyph_label(gid) + ": fill.origin must be zero (offset_px places the pen)"};
     return ok_status();
@@ -107,12 +116,29 @@ Expected<PreparedGlyph> GlyphRasterizer::prepare(GlyphId gid, const GlyphRenderO
     // Glyphs the font marks as overlapping get the accurate overlap resolution regardless.
     glyph.box.overlap =
         outline->overlapping_contours ? OverlapMode::Accurate : options.fill.overlap;
+    if (options.bold > 0) {
+        // glyph.hpp's rule: dilate by d, then move right by d and up (−y) by d.
+        const double d = options.bold * options.size_px / 2;
+        auto dilated = text_detail::dilate_outline(outline->path, d, kSyntheticBoldTolerancePx);
+        if (!dilated) return Error{glyph_label(gid) + ": synthetic bold: " +
+                                   dilated.error().message};
+        outline->path = std::move(*dilated);
+        outline->path.transform(Affine::translate({d, -d}));
+        outline->metrics.bounds_px = outline->path.control_box();
+        if (glyph.box.advance_px != 0) glyph.box.advance_px += 2 * d;
+        glyph.box.overlap = OverlapMode::Accurate;
+    }
     if (options.slant != 0) {
         // x += slant · (−y): y points down, so the height above the baseline is −y.
         const Affine shear = Affine::skew(-options.slant, 0);
         outline->path.transform(shear);
         Rect control = Rect::empty();
-        for (const OutlinePoint& p : outline->points) control = control.union_with(shear * p.pos);
+        if (options.bold > 0) {
+            control = outline->path.control_box();
+        } else {
+            for (const OutlinePoint& p : outline->points)
+                control = control.union_with(shear * p.pos);
+        }
         outline->metrics.bounds_px = control;
     }
     Status boxed = options.box == GlyphBoxMode::FreeType

@@ -20,6 +20,7 @@
 #include "text/bidi.hpp"
 #include "text/layout_breaks.hpp"
 #include "text/layout_common.hpp"
+#include "text/layout_fonts.hpp"
 #include "text/layout_vertical.hpp"
 #include "text/script_runs.hpp"
 #include "text/shape_tags.hpp"
@@ -44,18 +45,28 @@ struct LineSpan {
 
 struct Piece {
     std::size_t first = 0, count = 0;   // in the line's glyph pool
+    std::uint16_t font = 0;
+};
+
+// A line's vertical extent in pixels from the fonts it uses (the first font always counts).
+struct LineExtent {
+    double ascent = 0, descent = 0, gap = 0;   // descent > 0 below the baseline
+    bool operator==(const LineExtent& o) const {
+        return ascent == o.ascent && descent == o.descent && gap == o.gap;
+    }
 };
 
 // Everything one paragraph needs; members are reused across paragraphs.
 class ParagraphLayout {
 public:
-    ParagraphLayout(Shaper& shaper, const ShapeOptions& shape, std::string_view text,
+    ParagraphLayout(LayoutFonts& fonts, const ShapeOptions& shape, std::string_view text,
                     const std::vector<CodePoint>& cps)
-        : shaper_(shaper), shape_(shape), text_(text), cps_(cps) {}
+        : fonts_(fonts), shape_(shape), text_(text), cps_(cps) {}
 
     // Lays out cps[begin, end) as lines appended to `out`: glyph x relative to the line's start,
     // y relative to its baseline; placement on the page comes after all lines are known.
-    Status run(std::size_t begin, std::size_t end, double width_px, TextLayout& out);
+    Status run(std::size_t begin, std::size_t end, double width_px, TextLayout& out,
+               std::vector<LineExtent>& extents);
     // The level of the paragraph last run: 1 right to left, 0 left to right.
     std::uint8_t paragraph_level() const { return bidi_.paragraph_level(); }
 
@@ -82,9 +93,10 @@ private:
     bool fits(std::size_t a, std::size_t b, double width_px) const {
         return prefix_[trimmed(a, b)] - prefix_[a] <= width_px + kFitSlackPx;
     }
-    Status place_line(const LineSpan& line, TextLayout& out);
+    Status place_line(const LineSpan& line, TextLayout& out, std::vector<LineExtent>& extents);
+    void add_extent(std::uint16_t font, LineExtent& extent) const;
 
-    Shaper& shaper_;
+    LayoutFonts& fonts_;
     const ShapeOptions& shape_;
     std::string_view text_;
     const std::vector<CodePoint>& cps_;
@@ -95,6 +107,7 @@ private:
     std::vector<ScriptRun> runs_;
     std::vector<ShapedRun> shaped_;
     std::vector<std::uint8_t> breaks_, boundary_, line_levels_;
+    std::vector<std::uint16_t> char_fonts_;
     std::vector<double> prefix_;
     std::vector<LineSpan> lines_;
     std::vector<ShapedGlyph> pool_;
@@ -107,10 +120,11 @@ private:
 Status ParagraphLayout::shape_range(std::size_t a, std::size_t b, const ScriptRun& run,
                                     ShapedRun& into) {
     ShapeOptions opts = shape_;
+    fonts_.variations(run.font, shape_, opts.variations);
     opts.direction = (run.level & 1) != 0 ? Direction::RightToLeft : Direction::LeftToRight;
     opts.script = tag_string(hb_script_to_iso15924_tag(run.script));
     const std::uint32_t from = offset(a), to = offset(b);
-    auto shaped = shaper_.shape(text_.substr(from, to - from), opts);
+    auto shaped = fonts_.shaper(run.font).shape(text_.substr(from, to - from), opts);
     if (!shaped) return shaped.error();
     into = std::move(*shaped);
     for (ShapedGlyph& g : into.glyphs) g.cluster += from;
@@ -188,13 +202,14 @@ Status ParagraphLayout::wrap(std::size_t m, double width_px) {
 }
 
 Status ParagraphLayout::run(std::size_t begin, std::size_t end, double width_px,
-                            TextLayout& out) {
+                            TextLayout& out, std::vector<LineExtent>& extents) {
     base_ = begin;
     const std::size_t m = end - begin;
     chars_.resize(m);
     for (std::size_t k = 0; k < m; ++k) chars_[k] = cps_[begin + k].cp;
     if (auto ok = bidi_.resolve(chars_.data(), m, shape_.direction); !ok) return ok;
-    itemize(cps_, begin, end, bidi_.levels(), runs_);
+    if (auto ok = fonts_.assign(chars_.data(), m, breaker_, char_fonts_); !ok) return ok;
+    itemize(cps_, begin, end, bidi_.levels(), char_fonts_, runs_);
     shaped_.resize(runs_.size());
     std::vector<double>& adv = prefix_;
     adv.assign(m + 1, 0.0);
@@ -221,11 +236,21 @@ Status ParagraphLayout::run(std::size_t begin, std::size_t end, double width_px,
     }
     if (auto ok = wrap(m, width_px); !ok) return ok;
     for (const LineSpan& line : lines_)
-        if (auto ok = place_line(line, out); !ok) return ok;
+        if (auto ok = place_line(line, out, extents); !ok) return ok;
     return ok_status();
 }
 
-Status ParagraphLayout::place_line(const LineSpan& line, TextLayout& out) {
+void ParagraphLayout::add_extent(std::uint16_t font, LineExtent& extent) const {
+    const FontMetrics& m = fonts_.metrics(font);
+    if (m.units_per_em <= 0) return;
+    const double scale = shape_.size_px / m.units_per_em;
+    extent.ascent = std::max(extent.ascent, m.ascender * scale);
+    extent.descent = std::max(extent.descent, -m.descender * scale);
+    extent.gap = std::max(extent.gap, m.line_gap * scale);
+}
+
+Status ParagraphLayout::place_line(const LineSpan& line, TextLayout& out,
+                                   std::vector<LineExtent>& extents) {
     const std::size_t glyph_end = line.soft_end ? trimmed(line.begin, line.end) : line.end;
     pool_.clear();
     pieces_.clear();
@@ -248,9 +273,20 @@ Status ParagraphLayout::place_line(const LineSpan& line, TextLayout& out) {
             std::size_t q = p + 1;
             while (q < b && line_levels_[q - line.begin] == level) ++q;
             const std::uint32_t from = offset(base_ + p), to = offset(base_ + q);
-            Piece piece{pool_.size(), 0};
-            for (const ShapedGlyph& g : *glyphs)
-                if (g.cluster >= from && g.cluster < to) pool_.push_back(g);
+            Piece piece{pool_.size(), 0, run.font};
+            // HarfBuzz keeps a run's clusters monotonic (ascending left to right, descending
+            // for a right-to-left run), so the glyphs of [from, to) are one stretch, found by
+            // two binary searches instead of a scan of the whole run per line.
+            const bool rtl = (run.level & 1) != 0;
+            auto before = [&](std::uint32_t bound) {
+                return [bound, rtl](const ShapedGlyph& g) {
+                    return rtl ? g.cluster >= bound : g.cluster < bound;
+                };
+            };
+            auto first = std::partition_point(glyphs->begin(), glyphs->end(),
+                                              before(rtl ? to : from));
+            auto last = std::partition_point(first, glyphs->end(), before(rtl ? from : to));
+            pool_.insert(pool_.end(), first, last);
             piece.count = pool_.size() - piece.first;
             pieces_.push_back(piece);
             levels_.push_back(level);
@@ -264,14 +300,18 @@ Status ParagraphLayout::place_line(const LineSpan& line, TextLayout& out) {
     laid.text_begin = offset(base_ + line.begin);
     laid.text_end = offset(base_ + line.end);
     double pen = 0;
+    LineExtent extent;
+    add_extent(0, extent);
     for (std::size_t p : order_) {
         const Piece& piece = pieces_[p];
+        if (piece.font != 0 && piece.count > 0) add_extent(piece.font, extent);
         for (std::size_t i = piece.first; i < piece.first + piece.count; ++i) {
             const ShapedGlyph& g = pool_[i];
-            out.glyphs.push_back({g.gid, pen + g.x_offset_px, g.y_offset_px, g.cluster});
+            out.glyphs.push_back({g.gid, pen + g.x_offset_px, g.y_offset_px, g.cluster, piece.font});
             pen += g.x_advance_px;
         }
     }
+    extents.push_back(extent);
     laid.glyph_count = out.glyphs.size() - laid.first_glyph;
     laid.width_px = pen;
     out.lines.push_back(laid);
@@ -280,12 +320,14 @@ Status ParagraphLayout::place_line(const LineSpan& line, TextLayout& out) {
 
 }  // namespace
 
-Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
-                                 std::string_view utf8, const ShapeOptions& shape,
-                                 const LayoutOptions& layout) {
+namespace {
+
+Expected<TextLayout> layout_with(LayoutFonts& fonts, std::string_view utf8,
+                                 const ShapeOptions& shape, const LayoutOptions& layout) {
     if (auto ok = check_length("width_px", layout.width_px); !ok) return ok.error();
     if (auto ok = check_length("margin_px", layout.margin_px); !ok) return ok.error();
     if (auto ok = check_length("line_height", layout.line_height); !ok) return ok.error();
+    const FontMetrics& metrics = fonts.metrics(0);
     if (metrics.units_per_em <= 0)
         return Error{"layout: font metrics with units per em " +
                      std::to_string(metrics.units_per_em) + " (must be > 0)"};
@@ -294,7 +336,11 @@ Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
                      std::to_string(kMaxTextBytes) + " allowed"};
     // Shaping nothing checks the size, features, variations, script and language once, also
     // for a text with no characters.
-    if (auto probe = shaper.shape({}, shape); !probe) return probe.error();
+    {
+        ShapeOptions probe = shape;
+        fonts.variations(0, shape, probe.variations);
+        if (auto shaped = fonts.shaper(0).shape({}, probe); !shaped) return shaped.error();
+    }
 
     std::vector<CodePoint> cps;
     cps.reserve(utf8.size());
@@ -307,36 +353,55 @@ Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
     }
 
     if (shape.direction == Direction::TopToBottom || shape.direction == Direction::BottomToTop)
-        return layout_vertical(shaper, utf8, cps, shape, layout);
+        return layout_vertical(fonts, utf8, cps, shape, layout);
 
     TextLayout out;
     // Most scripts give about one glyph per code point: one allocation for a page instead of a
     // doubling series (whose copies each fault in fresh memory).
     out.glyphs.reserve(cps.size());
     std::vector<bool> rtl_line;
-    ParagraphLayout paragraph(shaper, shape, utf8, cps);
+    std::vector<LineExtent> extents;
+    ParagraphLayout paragraph(fonts, shape, utf8, cps);
     for (std::size_t p = 0;;) {
         std::size_t q = p;
         while (q < cps.size() && !is_newline(cps[q].cp)) ++q;
-        if (auto ok = paragraph.run(p, q, layout.width_px, out); !ok) return ok.error();
+        if (auto ok = paragraph.run(p, q, layout.width_px, out, extents); !ok) return ok.error();
         rtl_line.resize(out.lines.size(), paragraph.paragraph_level() == 1);
         if (q == cps.size()) break;
         p = q + 1;
         if (cps[q].cp == '\r' && p < cps.size() && cps[p].cp == '\n') ++p;
     }
 
-    // Vertical metrics: font units → pixels.
-    const double scale = shape.size_px / metrics.units_per_em;
-    const double ascender = metrics.ascender * scale, descender = metrics.descender * scale;
+    // Baselines (layout.hpp): the first at margin + its line's ascent; from one baseline to the
+    // next, (descent + gap of the line above + ascent of the line below) × the factor. Runs of
+    // lines with equal extents are placed by multiplication, so a single-font page has exactly
+    // the spacing margin + ascender + i · line advance.
     const double factor = layout.line_height > 0 ? layout.line_height : 1.0;
-    const double line_advance =
-        (metrics.ascender - metrics.descender + metrics.line_gap) * scale * factor;
     double widest = 0;
     for (const LaidOutLine& l : out.lines) widest = std::max(widest, l.width_px);
     const double avail = layout.width_px > 0 ? layout.width_px : widest;
     const double margin = layout.margin_px;
+    // The first font's extent, and its line advance computed in font units as it always was.
+    const double scale = shape.size_px / metrics.units_per_em;
+    const LineExtent base{metrics.ascender * scale, -metrics.descender * scale,
+                          std::max(0.0, metrics.line_gap * scale)};
+    const double base_step =
+        (metrics.ascender - metrics.descender + metrics.line_gap) * scale * factor;
+    double anchor = margin + extents[0].ascent;   // baseline of line `anchor_line`
+    std::size_t anchor_line = 0;
     for (std::size_t i = 0; i < out.lines.size(); ++i) {
         LaidOutLine& line = out.lines[i];
+        if (i > 0 && !(extents[i] == extents[i - 1])) {
+            anchor = out.lines[i - 1].baseline_y_px +
+                     (extents[i - 1].descent + extents[i - 1].gap + extents[i].ascent) * factor;
+            anchor_line = i;
+        }
+        const double step = extents[i] == base
+                                ? base_step
+                                : (extents[i].descent + extents[i].gap + extents[i].ascent) * factor;
+        line.baseline_y_px = anchor + static_cast<double>(i - anchor_line) * step;
+        line.ascent_px = extents[i].ascent;
+        line.descent_px = extents[i].descent;
         const double slack = std::max(0.0, avail - line.width_px);
         double x0 = 0;
         switch (layout.align) {
@@ -344,15 +409,17 @@ Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
             case Align::Center: x0 = slack / 2; break;
             case Align::End: x0 = rtl_line[i] ? 0 : slack; break;
         }
-        line.baseline_y_px = margin + ascender + static_cast<double>(i) * line_advance;
         for (std::size_t g = line.first_glyph; g < line.first_glyph + line.glyph_count; ++g) {
             out.glyphs[g].x_px += margin + x0;
             out.glyphs[g].y_px += line.baseline_y_px;
         }
     }
     out.width_px = avail + 2 * margin;
-    out.height_px = 2 * margin + ascender - descender +
-                 static_cast<double>(out.lines.size() - 1) * line_advance;
+    const bool uniform = std::all_of(extents.begin(), extents.end(),
+                                     [&](const LineExtent& e) { return e == base; });
+    out.height_px = uniform ? 2 * margin + base.ascent + base.descent +
+                                  static_cast<double>(out.lines.size() - 1) * base_step
+                            : out.lines.back().baseline_y_px + extents.back().descent + margin;
     // Each option is finite, but their products need not be: a line_height of 1e300 puts the
     // second line at infinity (a fuzz_text finding). The block's size bounds every position.
     if (!std::isfinite(out.width_px) || !std::isfinite(out.height_px))
@@ -361,6 +428,21 @@ Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
                      format_num(layout.margin_px) + ", width_px " +
                      format_num(layout.width_px) + ")"};
     return out;
+}
+
+}  // namespace
+
+Expected<TextLayout> layout_text(Shaper& shaper, const FontMetrics& metrics,
+                                 std::string_view utf8, const ShapeOptions& shape,
+                                 const LayoutOptions& layout) {
+    SingleFont fonts(shaper, metrics);
+    return layout_with(fonts, utf8, shape, layout);
+}
+
+Expected<TextLayout> layout_text(FontCollection& fonts, std::string_view utf8,
+                                 const ShapeOptions& shape, const LayoutOptions& layout) {
+    CollectionFonts collection(fonts);
+    return layout_with(collection, utf8, shape, layout);
 }
 
 MissingGlyphs find_missing_glyphs(const TextLayout& layout, std::string_view utf8) {

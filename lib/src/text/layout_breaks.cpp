@@ -3,6 +3,7 @@
 
 #include <dlfcn.h>
 #include <unicode/ubrk.h>
+#include <unicode/uchar.h>
 #include <unicode/utf16.h>
 
 #include <mutex>
@@ -33,6 +34,7 @@ struct IcuApi {
     decltype(&ubrk_first) first = nullptr;
     decltype(&ubrk_next) next = nullptr;
     decltype(&u_errorName) error_name = nullptr;
+    decltype(&u_hasBinaryProperty) has_property = nullptr;
     std::string failure;   // why ICU could not be loaded; empty when it was
 };
 
@@ -58,6 +60,7 @@ const IcuApi& icu() {
         load(api.first, BEZEL_ICU_NAME(ubrk_first));
         load(api.next, BEZEL_ICU_NAME(ubrk_next));
         load(api.error_name, BEZEL_ICU_NAME(u_errorName));
+        load(api.has_property, BEZEL_ICU_NAME(u_hasBinaryProperty));
         // The library stays loaded for the life of the process: iterators may outlive any caller.
     });
     return api;
@@ -136,6 +139,17 @@ Status UnicodeBreaks::grapheme_starts(const char32_t* text, std::size_t n,
                                       std::vector<std::uint8_t>& out) {
     if (auto ok = impl_->open(impl_->character, UBRK_CHARACTER); !ok) return ok;
     return impl_->boundaries(impl_->character.get(), text, n, true, out);
+}
+
+Expected<bool> has_unicode_property(char32_t cp, UnicodeProperty property) {
+    const IcuApi& api = icu();
+    if (!api.failure.empty()) return Error{api.failure};
+    UProperty which = UCHAR_EMOJI_PRESENTATION;
+    switch (property) {
+        case UnicodeProperty::EmojiPresentation: which = UCHAR_EMOJI_PRESENTATION; break;
+        case UnicodeProperty::DefaultIgnorable: which = UCHAR_DEFAULT_IGNORABLE_CODE_POINT; break;
+    }
+    return api.has_property(static_cast<UChar32>(cp), which) != 0;
 }
 
 }  // namespace bezel::text_detail

@@ -1,5 +1,5 @@
 // Internal: line break opportunities (UAX #14) and grapheme cluster boundaries (UAX #29), by
-// ICU's break iterators.
+// ICU's break iterators, and the few character properties font fallback asks ICU for.
 //
 // ICU's root line rules are UAX #14's default algorithm, with its number tailoring (Example 7 of
 // UAX #14, which Unicode's LineBreakTest.txt assumes too), and dictionaries for the scripts
@@ -21,6 +21,14 @@ namespace bezel::text_detail {
 // UAX #14 class SP and the other breaking spaces of Zs (U+1680, U+2000–U+200A but not U+2007,
 // U+205F, U+3000), and tab.
 bool is_break_space(char32_t cp);
+
+// Binary character properties of ICU's Unicode data, for choosing a font per cluster.
+enum class UnicodeProperty : std::uint8_t {
+    EmojiPresentation,   // drawn as emoji (colour) by default (UTS #51 Emoji_Presentation)
+    DefaultIgnorable,    // invisible unless supported (ZWJ, variation selectors, tags, ...)
+};
+// Errors only when ICU cannot be loaded.
+Expected<bool> has_unicode_property(char32_t cp, UnicodeProperty property);
 
 // One ICU break iterator of each kind, reused from text to text. Not thread-safe: one per thread
 // (each ParagraphLayout has its own).

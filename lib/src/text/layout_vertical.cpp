@@ -1,9 +1,10 @@
 // layout_text for vertical text: each paragraph a column, as hb-view lays out --direction ttb.
 //
-// Per paragraph: the text is itemized into runs of one script (no bidi: vertical text has no
-// left-to-right or right-to-left order, and hb-view shapes vertical lines unreordered) and each
-// run is shaped once in the vertical direction, which gives HarfBuzz's vertical advances and
-// origins and applies the font's `vert` substitutions. Columns are filled greedily in logical
+// Per paragraph: each grapheme cluster gets its font (LayoutFonts: the one font, or the first of
+// a collection that draws it), the text is itemized into runs of one script and font (no bidi:
+// vertical text has no left-to-right or right-to-left order, and hb-view shapes vertical lines
+// unreordered) and each run is shaped once with its font in the vertical direction, which gives
+// HarfBuzz's vertical advances and origins and applies the font's `vert` substitutions. Columns are filled greedily in logical
 // order as lines are in layout.cpp: a column takes text up to the last break opportunity whose
 // text, without trailing spaces, fits the column length; a word longer than the column is cut at
 // the last cluster boundary that fits, its pieces reshaped. A column's glyphs are the slices of
@@ -11,8 +12,10 @@
 // run order for BottomToTop (HarfBuzz already reverses the glyphs inside each such run).
 //
 // Page: columns stack right to left (the CJK convention, and hb-view's for both directions),
-// one column advance apart; the column advance and width come from the font's vertical extents
-// (Shaper::extents: vhea, or half an em each side of the centre line), as hb-view's do.
+// one column advance apart; the column advance and width come from the first font's vertical
+// extents (Shaper::extents: vhea, or half an em each side of the centre line), as hb-view's do
+// for its one font. Fallback fonts do not widen columns: a CJK column's width is the em box,
+// whatever a fallback font's vhea says.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -35,9 +38,9 @@ struct ColumnSpan {
 // One paragraph's columns; members are reused across paragraphs.
 class VerticalParagraph {
 public:
-    VerticalParagraph(Shaper& shaper, const ShapeOptions& shape, std::string_view text,
+    VerticalParagraph(LayoutFonts& fonts, const ShapeOptions& shape, std::string_view text,
                       const std::vector<CodePoint>& cps)
-        : shaper_(shaper), shape_(shape), text_(text), cps_(cps) {}
+        : fonts_(fonts), shape_(shape), text_(text), cps_(cps) {}
 
     // Lays out cps[begin, end) as columns appended to `out`: glyph x relative to the column's
     // centre line, y to its top; placement on the page comes once all columns are known.
@@ -47,7 +50,8 @@ private:
     std::uint32_t offset(std::size_t i) const {
         return i < cps_.size() ? cps_[i].offset : static_cast<std::uint32_t>(text_.size());
     }
-    // The one place text is shaped: cps[a, b) of `run`, in the paragraph's vertical direction.
+    // The one place text is shaped: cps[a, b) of `run`, with its font, in the paragraph's
+    // vertical direction.
     Status shape_range(std::size_t a, std::size_t b, const ScriptRun& run, ShapedRun& into);
     // Whether the slice [a, b) of `run` in `col` ends at a cut inside a word, where the
     // paragraph's shaping across the cut no longer applies.
@@ -69,14 +73,15 @@ private:
     Status wrap(std::size_t m, double length_px);
     Status place_column(const ColumnSpan& col, TextLayout& out);
 
-    Shaper& shaper_;
+    LayoutFonts& fonts_;
     const ShapeOptions& shape_;
     std::string_view text_;
     const std::vector<CodePoint>& cps_;
     std::size_t base_ = 0;
     UnicodeBreaks breaker_;
     std::u32string chars_;
-    std::vector<std::uint8_t> levels_;   // all 0: itemize by script only
+    std::vector<std::uint8_t> levels_;   // all 0: itemize by script and font only
+    std::vector<std::uint16_t> char_fonts_;
     std::vector<ScriptRun> runs_;
     std::vector<ShapedRun> shaped_;
     std::vector<std::uint8_t> breaks_, boundary_;
@@ -84,15 +89,17 @@ private:
     std::vector<ColumnSpan> columns_;
     std::vector<ShapedGlyph> pool_;
     std::vector<std::size_t> piece_start_;   // into pool_, one per run slice, plus the end
+    std::vector<std::uint16_t> piece_font_;  // one per run slice
     ShapedRun reshaped_;
 };
 
 Status VerticalParagraph::shape_range(std::size_t a, std::size_t b, const ScriptRun& run,
                                       ShapedRun& into) {
     ShapeOptions opts = shape_;
+    fonts_.variations(run.font, shape_, opts.variations);
     opts.script = tag_string(hb_script_to_iso15924_tag(run.script));
     const std::uint32_t from = offset(a), to = offset(b);
-    auto shaped = shaper_.shape(text_.substr(from, to - from), opts);
+    auto shaped = fonts_.shaper(run.font).shape(text_.substr(from, to - from), opts);
     if (!shaped) return shaped.error();
     into = std::move(*shaped);
     for (ShapedGlyph& g : into.glyphs) g.cluster += from;
@@ -174,7 +181,8 @@ Status VerticalParagraph::run(std::size_t begin, std::size_t end, double length_
     chars_.resize(m);
     for (std::size_t k = 0; k < m; ++k) chars_[k] = cps_[begin + k].cp;
     levels_.assign(m, 0);
-    itemize(cps_, begin, end, levels_, runs_);
+    if (auto ok = fonts_.assign(chars_.data(), m, breaker_, char_fonts_); !ok) return ok;
+    itemize(cps_, begin, end, levels_, char_fonts_, runs_);
     shaped_.resize(runs_.size());
     prefix_.assign(m + 1, 0.0);
     boundary_.assign(m, 0);
@@ -207,6 +215,7 @@ Status VerticalParagraph::place_column(const ColumnSpan& col, TextLayout& out) {
     const std::size_t glyph_end = col.soft_end ? trimmed(col.begin, col.end) : col.end;
     pool_.clear();
     piece_start_.clear();
+    piece_font_.clear();
     for (std::size_t r = 0; r < runs_.size(); ++r) {
         const ScriptRun& run = runs_[r];
         const std::size_t a = std::max(run.begin - base_, col.begin);
@@ -218,6 +227,7 @@ Status VerticalParagraph::place_column(const ColumnSpan& col, TextLayout& out) {
             glyphs = &reshaped_.glyphs;
         }
         piece_start_.push_back(pool_.size());
+        piece_font_.push_back(run.font);
         const std::uint32_t from = offset(base_ + a), to = offset(base_ + b);
         for (const ShapedGlyph& g : *glyphs)
             if (g.cluster >= from && g.cluster < to) pool_.push_back(g);
@@ -235,7 +245,8 @@ Status VerticalParagraph::place_column(const ColumnSpan& col, TextLayout& out) {
         const std::size_t p = reversed ? pieces - 1 - i : i;
         for (std::size_t j = piece_start_[p]; j < piece_start_[p + 1]; ++j) {
             const ShapedGlyph& g = pool_[j];
-            out.glyphs.push_back({g.gid, g.x_offset_px, pen + g.y_offset_px, g.cluster});
+            out.glyphs.push_back(
+                {g.gid, g.x_offset_px, pen + g.y_offset_px, g.cluster, piece_font_[p]});
             pen += g.y_advance_px;
         }
     }
@@ -247,10 +258,12 @@ Status VerticalParagraph::place_column(const ColumnSpan& col, TextLayout& out) {
 
 }  // namespace
 
-Expected<TextLayout> layout_vertical(Shaper& shaper, std::string_view utf8,
+Expected<TextLayout> layout_vertical(LayoutFonts& fonts, std::string_view utf8,
                                      const std::vector<CodePoint>& cps, const ShapeOptions& shape,
                                      const LayoutOptions& layout) {
-    auto extents = shaper.extents(shape);
+    ShapeOptions first = shape;
+    fonts.variations(0, shape, first.variations);
+    auto extents = fonts.shaper(0).extents(first);
     if (!extents) return extents.error();
     double right = extents->ascender_px, left = -extents->descender_px;
     double gap = extents->line_gap_px;
@@ -263,7 +276,7 @@ Expected<TextLayout> layout_vertical(Shaper& shaper, std::string_view utf8,
 
     TextLayout out;
     out.glyphs.reserve(cps.size());
-    VerticalParagraph paragraph(shaper, shape, utf8, cps);
+    VerticalParagraph paragraph(fonts, shape, utf8, cps);
     for (std::size_t p = 0;;) {
         std::size_t q = p;
         while (q < cps.size() && !is_newline(cps[q].cp)) ++q;
@@ -302,6 +315,8 @@ Expected<TextLayout> layout_vertical(Shaper& shaper, std::string_view utf8,
         }
         col.baseline_x_px = first_centre - static_cast<double>(i) * column_advance;
         col.baseline_y_px = margin + y0;
+        col.ascent_px = right;
+        col.descent_px = left;
         for (std::size_t g = col.first_glyph; g < col.first_glyph + col.glyph_count; ++g) {
             out.glyphs[g].x_px += col.baseline_x_px;
             out.glyphs[g].y_px += col.baseline_y_px;

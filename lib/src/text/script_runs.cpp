@@ -24,7 +24,8 @@ bool is_mark(char32_t cp) {
 hb_script_t script_of(char32_t cp) { return hb_unicode_script(ufuncs(), cp); }
 
 void itemize(const std::vector<CodePoint>& cps, std::size_t begin, std::size_t end,
-             const std::vector<std::uint8_t>& levels, std::vector<ScriptRun>& runs) {
+             const std::vector<std::uint8_t>& levels, const std::vector<std::uint16_t>& fonts,
+             std::vector<ScriptRun>& runs) {
     runs.clear();
     const std::size_t n = end - begin;
     // Common and inherited characters take the script before them (the one after, at the
@@ -42,10 +43,12 @@ void itemize(const std::vector<CodePoint>& cps, std::size_t begin, std::size_t e
         if (s != HB_SCRIPT_COMMON && s != HB_SCRIPT_INHERITED && s != HB_SCRIPT_UNKNOWN)
             current = s;
         const std::uint8_t level = levels[k];
-        if (!runs.empty() && runs.back().level == level && runs.back().script == current) {
+        const std::uint16_t font = fonts[k];
+        if (!runs.empty() && runs.back().level == level && runs.back().script == current &&
+            runs.back().font == font) {
             runs.back().end = begin + k + 1;
         } else {
-            runs.push_back({begin + k, begin + k + 1, current, level});
+            runs.push_back({begin + k, begin + k + 1, current, level, font});
         }
     }
 }

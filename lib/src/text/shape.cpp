@@ -10,10 +10,11 @@
 // Vertical runs (TopToBottom, BottomToTop): hb_font_create's font functions are HarfBuzz's own
 // OpenType ones, which give vertical advances (vmtx; without it the font's ascender − descender)
 // and vertical origins (horizontally half the glyph's advance; vertically VORG, else vmtx's top
-// side bearing above the glyph's top, else HarfBuzz's fallback). HarfBuzz's offsets then lead from the vertical pen to
-// the glyph's horizontal origin, where its outline is drawn: origin = pen + offset, in bezel's y
-// down as for horizontal runs. Its y advances are negative (y up, the pen goes down) for both
-// vertical directions (BottomToTop reverses the glyph order instead); negated, they are positive.
+// side bearing above the glyph's top, else HarfBuzz's fallback). HarfBuzz's offsets then lead
+// from the vertical pen to the glyph's horizontal origin, where its outline is drawn:
+// origin = pen + offset, in bezel's y down as for horizontal runs. Its y advances are negative
+// (y up, the pen goes down) for both vertical directions (BottomToTop reverses the glyph order
+// instead); negated, they are positive.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -197,6 +198,9 @@ Expected<ShapedRun> Shaper::shape(std::string_view utf8, const ShapeOptions& opt
     if (!(options.size_px > 0 && options.size_px <= kMaxFontSizePx))
         return Error{"font size " + format_number(options.size_px) + " px: out of range (0, " +
                      format_number(kMaxFontSizePx) + "]"};
+    if (!(options.bold >= 0 && options.bold <= kMaxSyntheticBold))   // NaN fails too
+        return Error{"bold " + format_number(options.bold) + ": out of range [0, " +
+                     format_number(kMaxSyntheticBold) + "]"};
     if (utf8.size() > kMaxTextBytes)
         return Error{"text of " + std::to_string(utf8.size()) + " bytes: longer than the " +
                      std::to_string(kMaxTextBytes) + " allowed"};
@@ -257,13 +261,19 @@ Expected<ShapedRun> Shaper::shape(std::string_view utf8, const ShapeOptions& opt
     run.direction = from_hb(dir);
     run.script = tag_string(hb_script_to_iso15924_tag(hb_buffer_get_script(buf)));
     run.glyphs.resize(n);
+    // ShapeOptions::bold: a nonzero advance grows by bold · size_px, away from zero (a vertical
+    // advance is negative in HarfBuzz's y-up frame and positive here, y down).
+    const double bold_px = options.bold * options.size_px;
+    auto widened = [bold_px](hb_position_t advance) {
+        return advance > 0 ? bold_px : advance < 0 ? -bold_px : 0.0;
+    };
     for (unsigned i = 0; i < n; ++i) {
         ShapedGlyph& g = run.glyphs[i];
         g.gid = info[i].codepoint;
         g.cluster = info[i].cluster;
         // HarfBuzz's y axis points up; bezel's down.
-        g.x_advance_px = pos[i].x_advance * px_per_unit;
-        g.y_advance_px = -pos[i].y_advance * px_per_unit;
+        g.x_advance_px = pos[i].x_advance * px_per_unit + widened(pos[i].x_advance);
+        g.y_advance_px = -(pos[i].y_advance * px_per_unit + widened(pos[i].y_advance));
         g.x_offset_px = pos[i].x_offset * px_per_unit;
         g.y_offset_px = -pos[i].y_offset * px_per_unit;
         run.advance_px += HB_DIRECTION_IS_HORIZONTAL(dir) ? g.x_advance_px : g.y_advance_px;

@@ -1,5 +1,8 @@
 // Script and language tags for the shaper.
 #include <cctype>
+#include <mutex>
+#include <utility>
+#include <vector>
 
 #include "text/shape_tags.hpp"
 
@@ -18,11 +21,25 @@ namespace {
 // from a typo. The scan stops at the script's first character: U+0041 for Latn, U+1E900 for
 // Adlm; only a tag that names no script goes through all 0x110000 code points, on the way to
 // an error.
+// The answers are remembered (layout shapes every run with its script named, up to thousands of
+// runs a page, and a scan to U+0900 for Devanagari is 2,300 lookups). Well-formed tags that
+// name no script are remembered too, up to kMaxRememberedScripts (past that, scanned again).
 bool unicode_has_script(hb_script_t script) {
+    constexpr std::size_t kMaxRememberedScripts = 1024;
+    static std::mutex mutex;
+    static std::vector<std::pair<hb_script_t, bool>> known;
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        for (const auto& k : known)
+            if (k.first == script) return k.second;
+    }
     hb_unicode_funcs_t* ucd = hb_unicode_funcs_get_default();
-    for (hb_codepoint_t cp = 0; cp <= 0x10FFFF; ++cp)
-        if (hb_unicode_script(ucd, cp) == script) return true;
-    return false;
+    bool found = false;
+    for (hb_codepoint_t cp = 0; cp <= 0x10FFFF && !found; ++cp)
+        found = hb_unicode_script(ucd, cp) == script;
+    std::lock_guard<std::mutex> lock(mutex);
+    if (known.size() < kMaxRememberedScripts) known.emplace_back(script, found);
+    return found;
 }
 
 }  // namespace

@@ -26,14 +26,15 @@ namespace {
 // of what kMaxImageDim alone would allow (4 GiB).
 constexpr double kMaxPagePixels = double{1 << 26};
 
-// A font id for the cache: the same for equal variation settings, so switching back and forth
-// between instances keeps both in the cache.
-std::uint64_t font_id_of(const std::vector<VariationSetting>& variations) {
-    std::uint64_t h = 0xcbf29ce484222325ULL;   // FNV-1a over tags and values' bits
+// A font id for the cache: the font's index in the collection and its variation coordinates, so
+// switching back and forth between instances keeps both in the cache.
+std::uint64_t font_id_of(std::size_t index, const std::vector<VariationSetting>& variations) {
+    std::uint64_t h = 0xcbf29ce484222325ULL;   // FNV-1a over the index, tags and values' bits
     auto eat = [&h](const void* p, std::size_t n) {
         const auto* b = static_cast<const unsigned char*>(p);
         for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 0x100000001b3ULL;
     };
+    eat(&index, sizeof index);
     for (const VariationSetting& v : variations) {
         eat(v.tag.data(), v.tag.size());
         eat(&v.value, sizeof v.value);
@@ -58,18 +59,47 @@ std::string whole_number(double v) {
 
 }  // namespace
 
-struct TextRenderer::Impl {
-    Font font;
-    Shaper shaper;
-    GlyphRasterizer rasterizer;   // borrows `font`: Impl lives on the heap and does not move
-    GlyphCache cache;
-    std::vector<VariationSetting> variations;
-    std::uint64_t font_id;
-    MissingGlyphs missing;   // of the last draw
+// What the renderer keeps per font of the collection.
+struct FontSlot {
+    std::unique_ptr<GlyphRasterizer> rasterizer;   // borrows the collection's Font (stable address)
+    std::vector<VariationSetting> applied;        // the coordinates the Font is set to
+    std::uint64_t font_id = 0;
+};
 
-    Impl(Font f, Shaper s, std::size_t cache_bytes)
-        : font(std::move(f)), shaper(std::move(s)), rasterizer(font), cache(cache_bytes),
-          font_id(font_id_of({})) {}
+struct TextRenderer::Impl {
+    FontCollection fonts;
+    std::vector<FontSlot> slots;   // one per font of `fonts`, grown as fallback adds fonts
+    GlyphCache cache;
+    MissingGlyphs missing;   // of the last draw
+    std::vector<VariationSetting> wanted;   // scratch
+
+    Impl(FontCollection f, std::size_t cache_bytes) : fonts(std::move(f)), cache(cache_bytes) {}
+
+    // Slots for every font, each Font at the coordinates it is shaped at (layout.hpp: the
+    // first font's own plus ShapeOptions::variations, the others their own).
+    Status prepare_fonts(const ShapeOptions& shape) {
+        while (slots.size() < fonts.size()) {
+            FontSlot slot;
+            slot.rasterizer = std::make_unique<GlyphRasterizer>(fonts.font(slots.size()));
+            slot.applied = fonts.source(slots.size()).variations;
+            slot.font_id = font_id_of(slots.size(), slot.applied);
+            slots.push_back(std::move(slot));
+        }
+        for (std::size_t i = 0; i < slots.size(); ++i) {
+            wanted = fonts.source(i).variations;
+            if (i == 0) wanted.insert(wanted.end(), shape.variations.begin(), shape.variations.end());
+            if (same_variations(wanted, slots[i].applied)) continue;
+            Font& font = fonts.font(i);
+            if (auto set = font.set_variations(wanted); !set) {
+                const std::string& m = set.error().message;
+                return m.find(font.file()) == std::string::npos ? Error{font.file() + ": " + m}
+                                                                : set.error();
+            }
+            slots[i].applied = wanted;
+            slots[i].font_id = font_id_of(i, wanted);
+        }
+        return ok_status();
+    }
 };
 
 TextRenderer::TextRenderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -79,16 +109,21 @@ TextRenderer::~TextRenderer() = default;
 
 Expected<TextRenderer> TextRenderer::open(const std::string& file, int face_index,
                                           std::size_t cache_bytes) {
-    auto font = Font::open(file, face_index);
-    if (!font) return font.error();
-    if (Status s = font->require_outlines(); !s) return s.error();
-    auto shaper = Shaper::open(file, face_index);
-    if (!shaper) return shaper.error();
-    return TextRenderer(std::make_unique<Impl>(std::move(*font), std::move(*shaper), cache_bytes));
+    auto fonts = FontCollection::open({FontSource{file, face_index, {}}});
+    if (!fonts) return fonts.error();
+    return open(std::move(*fonts), cache_bytes);
 }
 
-Font& TextRenderer::font() { return impl_->font; }
-Shaper& TextRenderer::shaper() { return impl_->shaper; }
+Expected<TextRenderer> TextRenderer::open(FontCollection fonts, std::size_t cache_bytes) {
+    for (std::size_t i = 0; i < fonts.size(); ++i)
+        if (Status s = fonts.font(i).require_outlines(); !s) return s.error();
+    fonts.set_outlines_only(true);
+    return TextRenderer(std::make_unique<Impl>(std::move(fonts), cache_bytes));
+}
+
+Font& TextRenderer::font() { return impl_->fonts.font(0); }
+Shaper& TextRenderer::shaper() { return impl_->fonts.shaper(0); }
+FontCollection& TextRenderer::fonts() { return impl_->fonts; }
 GlyphCache& TextRenderer::cache() { return impl_->cache; }
 const MissingGlyphs& TextRenderer::missing_glyphs() const { return impl_->missing; }
 
@@ -99,19 +134,13 @@ template <typename Page, typename MakePage, typename Blend>
 Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& options, Page& page,
                           MakePage&& make_page, Blend&& blend, PageRowsSink* rows_sink) {
     Impl& r = *impl_;
-    if (!same_variations(options.shape.variations, r.variations)) {
-        if (auto set = r.font.set_variations(options.shape.variations); !set) {
-            const std::string& m = set.error().message;
-            return m.find(r.font.file()) == std::string::npos ? Error{r.font.file() + ": " + m}
-                                                              : set.error();
-        }
-        r.variations = options.shape.variations;
-        r.font_id = font_id_of(r.variations);
-    }
+    if (auto ok = r.prepare_fonts(options.shape); !ok) return ok;
     r.missing = MissingGlyphs{};
-    auto layout = layout_text(r.shaper, r.font.metrics(), utf8, options.shape, options.layout);
+    auto layout = layout_text(r.fonts, utf8, options.shape, options.layout);
     if (!layout) return layout.error();
     r.missing = find_missing_glyphs(*layout, utf8);
+    // Fonts the fallback added while laying out.
+    if (auto ok = r.prepare_fonts(options.shape); !ok) return ok;
 
     const double w = std::ceil(layout->width_px), h = std::ceil(layout->height_px);
     if (!(w <= kMaxImageDim && h <= kMaxImageDim && w * h <= kMaxPagePixels))
@@ -128,6 +157,7 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     glyph.fill.lcd_order = options.lcd_order;
     glyph.hinting = options.hinting;
     glyph.slant = options.slant;
+    glyph.bold = options.shape.bold;   // the layout's advances were widened by the same value
     const bool whole_pixel_pen = hints_horizontally(options.hinting);
     const bool subpixel_y = options.hinting == Hinting::None &&
                             (options.shape.direction == Direction::TopToBottom ||
@@ -150,7 +180,8 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
         }
         if (std::fabs(column) > kMaxImageDim * 2.0 || std::fabs(row) > kMaxImageDim * 2.0)
             return nullptr;
-        auto cached = r.cache.get(r.rasterizer, r.font_id, g.gid, glyph);
+        FontSlot& slot = r.slots[g.font];
+        auto cached = r.cache.get(*slot.rasterizer, slot.font_id, g.gid, glyph);
         if (!cached) return cached.error();
         const CachedGlyph& c = **cached;
         if (c.box.width == 0) return nullptr;

@@ -1,0 +1,101 @@
+// bezel/font_collection.hpp — an ordered list of fonts that text draws from: each grapheme
+// cluster comes from the first font of the list that covers it (font fallback).
+//
+// Threading: a FontCollection holds Fonts and Shapers; one collection must not be used from two
+// threads at once. Open one per thread (faces are opened once per collection).
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bezel/expected.hpp"
+#include "bezel/font.hpp"
+#include "bezel/limits.hpp"
+#include "bezel/shape.hpp"
+
+namespace bezel {
+
+// Where a font of the collection came from.
+enum class FontOrigin : std::uint8_t {
+    Listed,   // the list it was opened with, or add()
+    System,   // found by the system fallback for characters no listed font covers
+};
+
+// What a fallback source is asked for: a font for one grapheme cluster.
+struct FallbackRequest {
+    std::u32string cluster;       // the code points that need glyphs (default-ignorables removed)
+    bool prefer_colour = false;   // emoji presentation: a colour font first
+    bool outlines_only = false;   // the collection takes only fonts with outlines
+};
+
+// Asked for a font when no font of the collection covers a cluster (for example fontconfig's
+// sorted fallback: system_fallback below). nullopt: no font has it. An Error (a source that
+// cannot work, such as a malformed pattern) becomes a warning of the collection, and the cluster
+// is drawn as missing.
+class FallbackSource {
+public:
+    virtual ~FallbackSource() = default;
+    virtual Expected<std::optional<FontSource>> font_for(const FallbackRequest& request) = 0;
+};
+
+class FontCollection {
+public:
+    // Opens each source's face once (a Font for outlines and metrics, a Shaper for HarfBuzz) and
+    // sets its variations. Errors name the file and the reason: missing, not a font, face index
+    // out of range, an unknown variation axis; an empty list; more than kMaxCollectionFonts.
+    static Expected<FontCollection> open(const std::vector<FontSource>& sources);
+    FontCollection(FontCollection&&) noexcept;
+    FontCollection& operator=(FontCollection&&) noexcept;
+    FontCollection(const FontCollection&) = delete;
+    FontCollection& operator=(const FontCollection&) = delete;
+    ~FontCollection();
+
+    // Appends a font (its index is size() − 1). Errors as open().
+    Expected<std::size_t> add(const FontSource& source, FontOrigin origin = FontOrigin::Listed);
+
+    std::size_t size() const;
+    // Fonts keep their index and their address for the life of the collection (a
+    // GlyphRasterizer may hold font(i)).
+    Font& font(std::size_t i);
+    Shaper& shaper(std::size_t i);
+    const FontSource& source(std::size_t i) const;
+    FontOrigin origin(std::size_t i) const;
+    const FontMetrics& metrics(std::size_t i) const;
+    // A colour font (COLR, CBDT, sbix): preferred for emoji presentation.
+    bool is_colour(std::size_t i) const;
+
+    // The font for one character or cluster outside text layout (a glyph, an atlas entry): the
+    // first font of the list that covers it, else the fallback source's (appended), else
+    // nullopt. Errors as covers().
+    Expected<std::optional<std::size_t>> font_for(const std::u32string& cluster);
+
+    // Whether font i maps every code point of `cluster` except default-ignorable ones (ZWJ,
+    // variation selectors, tags: HarfBuzz draws them as nothing when the font lacks them).
+    // Errors only when the Unicode data (ICU) cannot be loaded.
+    Expected<bool> covers(std::size_t i, const char32_t* cluster, std::size_t n) const;
+
+    // Where no font of the list covers a cluster, `fallback` is asked for one; a font it
+    // names is opened and appended with FontOrigin::System (once per file and face). A font it
+    // names that fails to open is skipped, and its error kept in warnings(): a system font is not
+    // the caller's mistake. nullptr (the default): no fallback beyond the list.
+    void set_fallback(std::shared_ptr<FallbackSource> fallback);
+    FallbackSource* fallback() const;
+    // Whether fonts from the fallback must have outlines (a renderer that cannot draw colour
+    // bitmaps sets it): a bitmap-only one is then skipped with a warning. Off by default.
+    void set_outlines_only(bool outlines_only);
+    bool outlines_only() const;
+    // Fonts the fallback named that could not be opened, one message each.
+    const std::vector<std::string>& warnings() const;
+    // Records a fallback font that could not be opened (the layout calls it).
+    void add_warning(std::string message);
+
+private:
+    struct Impl;
+    explicit FontCollection(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace bezel
