@@ -122,7 +122,7 @@ std::vector<BadInput> catalogue() {
         {"unknown hinting mode", {"render", kDejaVu, "--text", "g", "--hinting", "strong", "-o", "out.png"}, 2, "--hinting"},
         {"negative synthetic bold", {"render", kDejaVu, "--text", "g", "--font-bold", "-0.02", "-o", "out.png"}, 2, "--font-bold: -0.02 is not in 0 to 0.25"},
         {"synthetic bold with outlined text", {"render", kDejaVu, "--text", "g", "--font-bold", "0.02", "--stroke", "1", "-o", "out.png"}, 2, "--font-bold does not combine with --stroke"},
-        {"vertical direction (not offered)", {"render", kDejaVu, "--text", "g", "--direction", "ttb", "-o", "out.png"}, 2, "expected ltr, rtl or auto"},
+        {"unknown direction", {"render", kDejaVu, "--text", "g", "--direction", "up", "-o", "out.png"}, 2, "--direction 'up': expected ltr, rtl, ttb, btt or auto"},
         {"subpixel text on a transparent page", {"render", kDejaVu, "--text", "g", "--lcd", "rgb", "--background", "transparent", "-o", "out.png"}, 2, "--lcd needs an opaque --background"},
         {"gamma out of range", {"render", kDejaVu, "--text", "g", "--gamma", "0.5", "-o", "out.png"}, 2, "--gamma"},
         {"unknown compression level", {"render", kDejaVu, "--text", "g", "--compression", "best", "-o", "out.png"}, 2, "--compression"},

@@ -256,9 +256,8 @@ TEST(RenderCli, BadInputGivesOneErrorLineAndNoFile) {
         {{"render", kDejaVu, "--text-file", "bad.txt", "-o", "out.png"}, 1, "bad.txt"},
         {{"render", kDejaVu, "--text-file", "missing.txt", "-o", "out.png"}, 1, "missing.txt"},
         {{"render", kDejaVu, "x", "-o", "out.gif"}, 2, "out.gif"},
-        {{"render", kDejaVu, "x", "--direction", "up", "-o", "out.png"}, 2, "up"},
-        // Vertical text is not offered until it exists.
-        {{"render", kDejaVu, "x", "--direction", "ttb", "-o", "out.png"}, 2, "ltr, rtl or auto"},
+        {{"render", kDejaVu, "x", "--direction", "up", "-o", "out.png"}, 2,
+         "--direction 'up': expected ltr, rtl, ttb, btt or auto"},
         {{"render", kDejaVu, "x", "--hinting", "strong", "-o", "out.png"}, 2, "--hinting"},
         {{"render", kDejaVu, "x", "--font-slant", "3", "-o", "out.png"}, 2, "--font-slant: 3 is not in -1 to 1"},
         {{"render", kDejaVu, "x", "--lcd", "rgb", "--background", "transparent", "-o", "out.png"},

@@ -344,8 +344,13 @@ TEST(Layout, BadOptionsAreErrorsNamingThem) {
               "text byte 4: invalid UTF-8");
     ShapeOptions vertical = at_size(10);
     vertical.direction = Direction::TopToBottom;
-    EXPECT_EQ(error_of("A", vertical, LayoutOptions{}),
-              "layout: vertical text is not supported (direction ttb/btt)");
+    EXPECT_EQ(error_of("A", vertical, wrap_at(-2)),
+              "layout width_px -2: must be a finite number >= 0");
+    o = LayoutOptions{};
+    o.line_height = 1e308;   // finite, but 1e308 times a 10 px column is not
+    EXPECT_EQ(error_of("A\nA", vertical, o),
+              "layout: the text block would be infinitely large (line_height 1e+308, margin_px 0, "
+              "width_px 0)");
     FontMetrics broken;
     auto r = layout_text(s.shaper, broken, "A", at_size(10), LayoutOptions{});
     ASSERT_FALSE(r.ok());

@@ -32,7 +32,7 @@ constexpr const char* kRenderCommand = "bezel render";
 // (hb-view's 256 px default suits one word, not a paragraph.)
 constexpr double kDefaultRenderSizePx = 20.0;
 // Terminal previews draw one pixel per column and two per row, so glyphs are 10 px tall (five
-// rows) unless --font-size says otherwise, and lines wrap at the terminal's width.
+// rows) unless --font-size says otherwise, and horizontal lines wrap at the terminal's width.
 constexpr double kDefaultPreviewSizePx = 10.0;
 constexpr double kDefaultMarginPx = 16.0;   // hb-view's default margin
 constexpr double kDefaultPreviewMarginPx = 1.0;
@@ -99,8 +99,9 @@ Expected<bezel::Direction> parse_direction(const std::string& name) {
     if (name.empty() || name == "auto") return bezel::Direction::Auto;
     if (name == "ltr") return bezel::Direction::LeftToRight;
     if (name == "rtl") return bezel::Direction::RightToLeft;
-    // Vertical layout (ttb, btt) does not exist yet; the option does not offer it.
-    return Error{"--direction '" + name + "': expected ltr, rtl or auto"};
+    if (name == "ttb") return bezel::Direction::TopToBottom;
+    if (name == "btt") return bezel::Direction::BottomToTop;
+    return Error{"--direction '" + name + "': expected ltr, rtl, ttb, btt or auto"};
 }
 
 // The --text-file contents ('-': stdin), at most kMaxTextBytes, valid UTF-8, one trailing newline
@@ -258,7 +259,10 @@ int run_render(RenderArgs& args) {
     if (preview && args.cmd->count("--margin") == 0) args.margin_px = kDefaultPreviewMarginPx;
     options.layout.margin_px = args.margin_px;
     options.layout.width_px = args.width_px;
-    if (preview && args.cmd->count("--width") == 0 && columns > 0)
+    // Vertical text's --width is its column length; the terminal's width does not bound it.
+    const bool vertical = options.shape.direction == bezel::Direction::TopToBottom ||
+                          options.shape.direction == bezel::Direction::BottomToTop;
+    if (preview && args.cmd->count("--width") == 0 && columns > 0 && !vertical)
         options.layout.width_px = std::max(1.0, columns - 2 * args.margin_px);
     options.layout.line_height = args.line_height;
     options.layout.align = args.align == "center" ? Align::Center
@@ -325,8 +329,8 @@ Command add_render_command(CLI::App& app) {
     args->font.size_px = kDefaultRenderSizePx;
     cmd->footer(
         "With no TEXT, a sample paragraph. With no -o, PNG to stdout, or an ANSI preview when\n"
-        "stdout is a terminal (then --font-size defaults to 10, --margin to 1 and lines wrap at\n"
-        "the terminal's width). Colours: #RRGGBB, #RRGGBBAA, #RGB, #RGBA, a CSS colour name\n"
+        "stdout is a terminal (then --font-size defaults to 10, --margin to 1 and horizontal lines\n"
+        "wrap at the terminal's width). Colours: #RRGGBB, #RRGGBBAA, #RGB, #RGBA, a CSS colour name\n"
         "(yellow, rebeccapurple, ...) or transparent. PNG is gray for gray-on-gray, RGBA for\n"
         "translucent colours. Characters the font lacks are drawn as its .notdef box, with a\n"
         "warning (an error with --strict).\n"
@@ -334,6 +338,7 @@ Command add_render_command(CLI::App& app) {
         "  bezel render -o hello.png\n"
         "  bezel render DejaVuSans.ttf 'Wafer office' --font-size 48 --features=-liga -o w.png\n"
         "  bezel render --text-file page.txt --width 640 --align center -o page.png\n"
+        "  bezel render NotoSansCJKjp-Subset.otf '縦書き、「日本語」' --direction ttb -o v.png\n"
         "  bezel render 'Outline' --font-size 96 --stroke 2 -o outline.png\n"
         "  bezel render -O ansi 'Hello'");
     add_font_args(*cmd, args->font);
@@ -349,9 +354,11 @@ Command add_render_command(CLI::App& app) {
         ->type_name("LIST")
         ->check(parse_check([](const std::string& v) { return parse_features(v); }, "features"));
     cmd->add_option("--direction", args->direction,
-                    "The paragraph's base direction: ltr, rtl or auto (default: from its first "
-                    "strong character); runs of the other direction inside it are still ordered "
-                    "by bidi, where hb-view's --direction shapes all of the text one way")
+                    "ltr, rtl or auto: the paragraph's base direction (default auto: from its "
+                    "first strong character); runs of the other direction inside it are still "
+                    "ordered by bidi, where hb-view's --direction shapes all of the text one way. "
+                    "ttb or btt: vertical text, one column per paragraph, columns right to left, "
+                    "as hb-view draws them")
         ->type_name("DIR");
     cmd->add_option("--script", args->script, "ISO 15924 script tag, e.g. Arab (default: from the text)")
         ->type_name("TAG")
@@ -361,14 +368,16 @@ Command add_render_command(CLI::App& app) {
         ->check(parse_check(check_language_tag, "language"));
     cmd->add_option("--width", args->width_px,
                     "Wrap lines to this width in pixels (default: no wrapping, only the text's "
-                    "newlines)")
+                    "newlines); vertical text (--direction ttb/btt): wrap columns at this height")
         ->type_name("PX")
         ->check(in_range(0.0, static_cast<double>(kMaxImageDim)));
     cmd->add_option("--margin", args->margin_px, "Margin on all four sides, pixels (default 16)")
         ->type_name("PX")
         ->check(in_range(0.0, static_cast<double>(kMaxImageDim)));
     cmd->add_option("--line-height", args->line_height,
-                    "Baseline distance as a multiple of the font's line height (default 1)")
+                    "Baseline distance as a multiple of the font's line height (default 1); "
+                    "vertical text: the distance between columns, a multiple of the vertical "
+                    "line height")
         ->type_name("X")
         ->check(in_range(0.0, 100.0));
     cmd->add_option("--align", args->align, "start, center or end (default start)")

@@ -1,7 +1,9 @@
 // bezel/layout.hpp — a paragraph shaped and laid out into lines: explicit breaks, wrapping at a
-// width, bidi runs ordered per line, alignment and margins.
+// width, bidi runs ordered per line, alignment and margins; or, for a vertical direction, into
+// columns.
 //
-// Units: pixels, y DOWN; a glyph's pen position is on its baseline.
+// Units: pixels, y DOWN; a glyph's pen position is on its baseline (horizontal text) or on its
+// column's centre line (vertical text).
 #pragma once
 
 #include <cstddef>
@@ -18,29 +20,45 @@ namespace bezel {
 
 enum class Align : std::uint8_t { Start, Center, End };
 
+// For vertical text (ShapeOptions::direction TopToBottom or BottomToTop) every field is along
+// the line's own axis: width_px is the column LENGTH (a height), line_height spaces columns, and
+// align places the text along its column.
 struct LayoutOptions {
     double width_px = 0;       // wrap lines at break opportunities to fit this width; 0 = no wrap
+                               // (vertical text: columns wrap at this height)
     double line_height = 0;    // baseline-to-baseline distance as a multiple of the fonts' own
-                               // (ascender − descender + line gap); 0 means 1.0
+                               // (ascender − descender + line gap); 0 means 1.0. Vertical text:
+                               // centre line to centre line, a multiple of the first font's
+                               // vertical extents (Shaper::extents)
     double margin_px = 0;      // around the text block on all four sides
-    Align align = Align::Start;  // Start is left for LTR paragraphs and right for RTL ones
+    Align align = Align::Start;  // Start is left for LTR paragraphs and right for RTL ones; top
+                                 // for TopToBottom columns and bottom for BottomToTop ones
 };
 
-// A glyph placed on the page: pen position (baseline) in page pixels, y down.
+// A glyph placed on the page, y down: its origin (where its outline's (0, 0) goes), which is the
+// pen position plus HarfBuzz's offset. Horizontal text: on the baseline. Vertical text: the
+// glyph's horizontal origin, placed by HarfBuzz's vertical origin (half its advance left of the
+// column's centre line; VORG or vmtx below the pen).
 struct PlacedGlyph {
     GlyphId gid = 0;
-    double x_px = 0, y_px = 0;    // pen position on the baseline
+    double x_px = 0, y_px = 0;    // origin: pen position + offset
     std::uint32_t cluster = 0;   // byte offset in the whole input text
     std::uint16_t font = 0;      // index in the FontCollection (0 for the single-font layout)
 };
 
+// A line, or a column of vertical text (then "width" is its length down the page).
 struct LaidOutLine {
-    std::size_t first_glyph = 0, glyph_count = 0;   // into TextLayout::glyphs
+    std::size_t first_glyph = 0, glyph_count = 0;   // into TextLayout::glyphs, in visual order
+                                                    // (left to right; vertical: top to bottom)
     std::uint32_t text_begin = 0, text_end = 0;     // byte range of the text on this line
-    double baseline_y_px = 0;
+    double baseline_y_px = 0;                       // vertical text: the pen y of the column's top
+    double baseline_x_px = 0;                       // vertical text: the column's centre line
+                                                    // (its pens' x); 0 for horizontal text
     double width_px = 0;                            // advance width of the line's glyphs
+                                                    // (vertical text: their advance height)
     // The line's extent above and below its baseline: the largest ascender and descender
-    // (descent > 0) of the fonts it uses, the first font always among them.
+    // (descent > 0) of the fonts it uses, the first font always among them. Vertical text: the
+    // first font's vertical extents right (ascent) and left (descent) of the centre line.
     double ascent_px = 0, descent_px = 0;
 };
 
@@ -55,8 +73,23 @@ struct TextLayout {
 // Khmer and Myanmar; a word wider than the line is broken between grapheme clusters); each line
 // is shaped per run of one script, direction and font, runs ordered by their bidi levels. `metrics`
 // gives line height. Errors as Shaper::shape, plus a negative or non-finite
-// width/margin/line height, metrics with units_per_em ≤ 0, and a vertical direction (layout is
-// horizontal only).
+// width/margin/line height, metrics with units_per_em ≤ 0.
+//
+// Vertical text (shape.direction TopToBottom or BottomToTop), as hb-view lays out --direction
+// ttb: each paragraph is one column, or several when width_px > 0 (the column length), wrapped
+// as lines are. Columns stack right to left, the first one's centre line at `right` from the
+// page's right margin, the next one column advance further left; the column advance is
+// (right + left + line gap) · line_height, where right, left and the gap are the first font's
+// vertical extents (Shaper::extents: vhea's ascender and −descender; half an em each when the
+// font has no vhea, or one whose ascender is not beyond its descender); `metrics` is not used.
+// The page is right + left + (columns − 1) · column advance wide and the longest column (or
+// width_px) high, plus the margins. Each run of one script and font is shaped in the vertical
+// direction: vertical advances (vmtx, else ascender − descender), origins (VORG, else vmtx's
+// side bearing, else HarfBuzz's fallback from the glyph's extents) and the font's `vert`
+// substitutions (brackets, 、。, ー, small kana). Latin and other horizontal scripts stand
+// upright, one glyph under the next, as hb-view draws them (not turned sideways as CSS's
+// text-orientation: mixed would). No bidi: runs keep their logical order down the column (up it
+// for BottomToTop, whose glyphs HarfBuzz reverses).
 //
 // Lines: N line separators make N + 1 lines (an empty text is one empty line); the first
 // baseline is at margin + ascender; spaces at the end of a wrapped line hang (not placed, not

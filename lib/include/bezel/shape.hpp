@@ -79,6 +79,11 @@ struct ShapedRun {
     double advance_px = 0;                            // sum of advances along the direction
 };
 
+// A font's line metrics in pixels (Shaper::extents says which side is which).
+struct FontExtents {
+    double ascender_px = 0, descender_px = 0, line_gap_px = 0;
+};
+
 // HarfBuzz shaping of one font file (its own hb_face from the file; glyph ids are the same as
 // Font's for the same file and face index).
 class Shaper {
@@ -95,6 +100,15 @@ public:
     // invalid UTF-8 (offset named), text longer than kMaxTextBytes, size out of range, an
     // unknown variation axis, a script or language tag that does not parse, a bold out of range.
     Expected<ShapedRun> shape(std::string_view utf8, const ShapeOptions& options);
+
+    // The font's extents for options.direction at options.size_px and options.variations, as
+    // hb_font_get_extents_for_direction gives them (hb-view's line spacing). Horizontal (and
+    // Auto): hhea/OS/2 ascender above the baseline, descender below it (< 0), line gap. Vertical
+    // (TopToBottom, BottomToTop): vhea's, measured across the column from its centre line,
+    // ascender to the right (> 0) and descender to the left (< 0); a font without vhea gets
+    // HarfBuzz's fallback of half an em each side and no gap. Errors as shape() for the size and
+    // the variations.
+    Expected<FontExtents> extents(const ShapeOptions& options);
 
 private:
     struct Impl;

@@ -28,7 +28,9 @@ struct TextRenderOptions {
     // Glyph outlines hinted by FreeType (font.hpp). Advances and positions stay HarfBuzz's
     // unhinted ones; a glyph hinted horizontally (Full, Auto) is drawn at the whole pixel nearest
     // its pen, since its stems were fitted to the grid at a whole-pixel origin; None and Light
-    // keep subpixel pen positions.
+    // keep subpixel pen x (a quarter pixel). The pen y is a whole pixel (one baseline row per
+    // line), except for unhinted vertical text (a TopToBottom or BottomToTop direction), whose
+    // glyphs advance along y and keep a quarter pixel there too.
     Hinting hinting = Hinting::None;
     // Synthetic slant of every glyph, as GlyphRenderOptions::slant. (Synthetic bold is
     // shape.bold: it widens the advances too, so it lives with the shaping it changes.)

@@ -19,7 +19,9 @@
 #include "bezel/layout.hpp"
 #include "text/bidi.hpp"
 #include "text/layout_breaks.hpp"
+#include "text/layout_common.hpp"
 #include "text/layout_fonts.hpp"
+#include "text/layout_vertical.hpp"
 #include "text/script_runs.hpp"
 #include "text/shape_tags.hpp"
 #include "text/utf8_decode.hpp"
@@ -29,22 +31,6 @@ namespace bezel {
 using namespace text_detail;
 
 namespace {
-
-// Slack when comparing a line's width with width_px: sums of advances in a different order
-// must not flip a fit that is exact on paper.
-constexpr double kFitSlackPx = 1e-6;
-
-bool is_newline(char32_t c) {
-    return c == '\n' || c == '\r' || c == 0x0B || c == 0x0C || c == 0x85 || c == 0x2028 ||
-           c == 0x2029;
-}
-
-// A number in a message: "%g" (6 significant digits), not std::to_string's "%f".
-std::string format_num(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
 
 Status check_length(const char* name, double v) {
     if (std::isfinite(v) && v >= 0) return ok_status();
@@ -341,8 +327,6 @@ Expected<TextLayout> layout_with(LayoutFonts& fonts, std::string_view utf8,
     if (auto ok = check_length("width_px", layout.width_px); !ok) return ok.error();
     if (auto ok = check_length("margin_px", layout.margin_px); !ok) return ok.error();
     if (auto ok = check_length("line_height", layout.line_height); !ok) return ok.error();
-    if (shape.direction == Direction::TopToBottom || shape.direction == Direction::BottomToTop)
-        return Error{"layout: vertical text is not supported (direction ttb/btt)"};
     const FontMetrics& metrics = fonts.metrics(0);
     if (metrics.units_per_em <= 0)
         return Error{"layout: font metrics with units per em " +
@@ -367,6 +351,9 @@ Expected<TextLayout> layout_with(LayoutFonts& fonts, std::string_view utf8,
         cps.push_back({static_cast<std::uint32_t>(i), cp});
         i += n;
     }
+
+    if (shape.direction == Direction::TopToBottom || shape.direction == Direction::BottomToTop)
+        return layout_vertical(fonts, utf8, cps, shape, layout);
 
     TextLayout out;
     // Most scripts give about one glyph per code point: one allocation for a page instead of a

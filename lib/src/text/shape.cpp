@@ -6,6 +6,15 @@
 // otherwise it also undoes the rounding of s). At the largest size (16384 px) s = 2^24 and a
 // glyph several em wide still fits HarfBuzz's 32-bit positions. No ppem is set: outlines are
 // unhinted, and so are advances.
+//
+// Vertical runs (TopToBottom, BottomToTop): hb_font_create's font functions are HarfBuzz's own
+// OpenType ones, which give vertical advances (vmtx; without it the font's ascender − descender)
+// and vertical origins (horizontally half the glyph's advance; vertically VORG, else vmtx's top
+// side bearing above the glyph's top, else HarfBuzz's fallback). HarfBuzz's offsets then lead
+// from the vertical pen to the glyph's horizontal origin, where its outline is drawn:
+// origin = pen + offset, in bezel's y down as for horizontal runs. Its y advances are negative
+// (y up, the pen goes down) for both vertical directions (BottomToTop reverses the glyph order
+// instead); negated, they are positive.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -92,7 +101,25 @@ struct Shaper::Impl {
     }
 
     Status set_variations(const std::vector<VariationSetting>& settings);
+    // Checks options.size_px, applies the size and the variations; returns pixels per HarfBuzz
+    // position unit.
+    Expected<double> configure(const ShapeOptions& options);
 };
+
+Expected<double> Shaper::Impl::configure(const ShapeOptions& options) {
+    if (!(options.size_px > 0 && options.size_px <= kMaxFontSizePx))
+        return Error{"font size " + format_number(options.size_px) + " px: out of range (0, " +
+                     format_number(kMaxFontSizePx) + "]"};
+    if (auto ok = set_variations(options.variations); !ok) return ok.error();
+    // At least one unit: a size below 1/2048 px would round the scale to 0 and divide by it
+    // (fuzz_text). Such a text is far below a pixel either way; its positions stay finite.
+    const int s = std::max(1, static_cast<int>(std::lround(options.size_px * kUnitsPerPx)));
+    if (s != scale) {
+        hb_font_set_scale(font, s, s);
+        scale = s;
+    }
+    return options.size_px / s;
+}
 
 Status Shaper::Impl::set_variations(const std::vector<VariationSetting>& settings) {
     wanted.clear();
@@ -195,7 +222,9 @@ Expected<ShapedRun> Shaper::shape(std::string_view utf8, const ShapeOptions& opt
         if (!l) return l.error();
         language = *l;
     }
-    if (auto ok = im.set_variations(options.variations); !ok) return ok.error();
+    auto configured = im.configure(options);   // the size again, then the variations
+    if (!configured) return configured.error();
+    const double px_per_unit = *configured;
 
     im.features.clear();
     for (const FeatureSetting& f : options.features) {
@@ -210,15 +239,6 @@ Expected<ShapedRun> Shaper::shape(std::string_view utf8, const ShapeOptions& opt
                                                 : static_cast<unsigned>(f.end);
         im.features.push_back(hf);
     }
-
-    // At least one unit: a size below 1/2048 px would round the scale to 0 and divide by it
-    // (fuzz_text). Such a text is far below a pixel either way; its positions stay finite.
-    const int scale = std::max(1, static_cast<int>(std::lround(options.size_px * kUnitsPerPx)));
-    if (scale != im.scale) {
-        hb_font_set_scale(im.font, scale, scale);
-        im.scale = scale;
-    }
-    const double px_per_unit = options.size_px / scale;
 
     hb_buffer_t* buf = im.buffer;
     hb_buffer_clear_contents(buf);
@@ -259,6 +279,17 @@ Expected<ShapedRun> Shaper::shape(std::string_view utf8, const ShapeOptions& opt
         run.advance_px += HB_DIRECTION_IS_HORIZONTAL(dir) ? g.x_advance_px : g.y_advance_px;
     }
     return run;
+}
+
+Expected<FontExtents> Shaper::extents(const ShapeOptions& options) {
+    auto px_per_unit = impl_->configure(options);
+    if (!px_per_unit) return px_per_unit.error();
+    const hb_direction_t dir = options.direction == Direction::Auto ? HB_DIRECTION_LTR
+                                                                     : to_hb(options.direction);
+    hb_font_extents_t e{};
+    hb_font_get_extents_for_direction(impl_->font, dir, &e);
+    return FontExtents{e.ascender * *px_per_unit, e.descender * *px_per_unit,
+                       e.line_gap * *px_per_unit};
 }
 
 }  // namespace bezel

@@ -4,7 +4,10 @@
 // integer column and a bin (so the cache's floor-quantization sees an exact bin and the error is
 // at most 1/8 px), or to the nearest whole pixel for glyphs hinted horizontally; a pen y is
 // rounded to a whole pixel, so every glyph of a line shares one baseline row and horizontal
-// stems stay crisp.
+// stems stay crisp. Vertical text (a TopToBottom or BottomToTop direction) advances along y
+// instead: unhinted, its pen y is binned as x is (a column's glyphs keep their exact spacing to
+// 1/8 px, as a line's do); hinted (every mode snaps y), it is rounded to a whole pixel, as for
+// horizontal text. Its pen x is binned or rounded as for horizontal text.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -156,6 +159,9 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     glyph.slant = options.slant;
     glyph.bold = options.shape.bold;   // the layout's advances were widened by the same value
     const bool whole_pixel_pen = hints_horizontally(options.hinting);
+    const bool subpixel_y = options.hinting == Hinting::None &&
+                            (options.shape.direction == Direction::TopToBottom ||
+                             options.shape.direction == Direction::BottomToTop);
     // The cached glyph at g's pen, with its top-left pixel; null for a pen far off the page (a
     // huge margin is refused by the size check above; this guards the int conversions) or an
     // empty glyph.
@@ -165,7 +171,13 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
                                     : std::floor(g.x_px * kSubpixelBins + 0.5);
         const double column = std::floor(quarters / kSubpixelBins);
         glyph.offset_px.x = (quarters - column * kSubpixelBins) / kSubpixelBins;
-        const double row = std::floor(g.y_px + 0.5);
+        double row = std::floor(g.y_px + 0.5);
+        glyph.offset_px.y = 0;
+        if (subpixel_y) {
+            const double bins = std::floor(g.y_px * kSubpixelBins + 0.5);
+            row = std::floor(bins / kSubpixelBins);
+            glyph.offset_px.y = (bins - row * kSubpixelBins) / kSubpixelBins;
+        }
         if (std::fabs(column) > kMaxImageDim * 2.0 || std::fabs(row) > kMaxImageDim * 2.0)
             return nullptr;
         FontSlot& slot = r.slots[g.font];
