@@ -27,6 +27,7 @@ const std::vector<std::string> kPool = {
     kDir + "/noto-arabic/NotoSansArabic-Regular.ttf",
     kDir + "/noto-hebrew/NotoSansHebrew-Regular.ttf",
     kDir + "/noto-devanagari/NotoSansDevanagari-Regular.ttf",
+    kDir + "/noto-cjk/NotoSansCJKjp-Subset.otf",
     kDir + "/noto-color-emoji/NotoColorEmoji-subset.ttf",
     kDir + "/edge-cases/EdgeCases.ttf",
     kDir + "/edge-cases/EdgeCases.ttc",
@@ -71,7 +72,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string choices = in.rest(in.below(16));
     bezel::TextRenderOptions options;
     options.shape.size_px = 1 + in.byte() % 32;
-    options.shape.direction = static_cast<bezel::Direction>(in.byte() % 3);
+    // All five: Auto, LTR, RTL and the vertical TopToBottom, BottomToTop.
+    options.shape.direction = static_cast<bezel::Direction>(in.byte() % 5);
     options.layout.width_px = in.byte() < 128 ? 0 : in.byte();
     const std::string text = in.rest(256);
 
