@@ -106,11 +106,10 @@ int run_atlas(AtlasArgs& args) {
     for (char32_t c : distinct) {
         // The first font of the list that maps c (or the fallback's); the first font's .notdef
         // when none does.
-        auto found = fonts->font_for(std::u32string(1, c));
-        if (!found) return fail_runtime(found.error().message);
-        const std::size_t font = found->value_or(0);
+        const std::optional<std::size_t> found = fonts->font_for(std::u32string(1, c));
+        const std::size_t font = found.value_or(0);
         std::optional<GlyphId> gid;
-        if (*found) gid = fonts->font(font).glyph_for_char(c);
+        if (found) gid = fonts->font(font).glyph_for_char(c);
         while (rasterizers.size() < fonts->size())
             rasterizers.push_back(std::make_unique<GlyphRasterizer>(fonts->font(rasterizers.size())));
         if (!gid) {

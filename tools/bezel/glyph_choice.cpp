@@ -92,11 +92,10 @@ Expected<std::vector<GlyphRequest>> requested_glyphs(const GlyphChoice& choice,
     if (!requests) return requests.error();
     for (GlyphRequest& r : *requests) {
         if (!r.missing) continue;
-        auto font = fonts.font_for(std::u32string(1, *r.code_point));
-        if (!font) return font.error();
-        if (!*font) continue;
-        if (auto gid = fonts.font(**font).glyph_for_char(*r.code_point))
-            r = GlyphRequest{*gid, r.code_point, false, **font};
+        const std::optional<std::size_t> font = fonts.font_for(std::u32string(1, *r.code_point));
+        if (!font) continue;
+        if (auto gid = fonts.font(*font).glyph_for_char(*r.code_point))
+            r = GlyphRequest{*gid, r.code_point, false, *font};
     }
     return requests;
 }

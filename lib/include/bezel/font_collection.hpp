@@ -78,13 +78,13 @@ public:
 
     // The font for one character or cluster outside text layout (a glyph, an atlas entry): the
     // first font of the list that covers it, else the fallback source's (appended), else
-    // nullopt. Errors as covers().
-    Expected<std::optional<std::size_t>> font_for(const std::u32string& cluster);
+    // nullopt.
+    std::optional<std::size_t> font_for(const std::u32string& cluster);
 
-    // Whether font i maps every code point of `cluster` except default-ignorable ones (ZWJ,
-    // variation selectors, tags: HarfBuzz draws them as nothing when the font lacks them).
-    // Errors only when the Unicode data (ICU) cannot be loaded.
-    Expected<bool> covers(std::size_t i, const char32_t* cluster, std::size_t n) const;
+    // Whether font i maps every code point of `cluster` except default-ignorable ones
+    // (is_default_ignorable, system_fonts.hpp: ZWJ, variation selectors, tags; HarfBuzz draws
+    // them as nothing when the font lacks them).
+    bool covers(std::size_t i, const char32_t* cluster, std::size_t n) const;
 
     // Where no font of the list covers a cluster, `fallback` is asked for one; a font it
     // names is opened and appended with FontOrigin::System (once per file and face). A font it

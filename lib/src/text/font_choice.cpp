@@ -36,18 +36,6 @@ bool is_common(char32_t cp) {
     return s == HB_SCRIPT_COMMON || s == HB_SCRIPT_INHERITED || s == HB_SCRIPT_UNKNOWN;
 }
 
-// Whether `cp` may be default-ignorable: the ranges of DerivedCoreProperties'
-// Default_Ignorable_Code_Point, so that ICU is asked only about these few.
-bool maybe_ignorable(char32_t cp) {
-    return cp == 0xAD || cp == 0x34F || cp == 0x61C || (cp >= 0x115F && cp <= 0x1160) ||
-           (cp >= 0x17B4 && cp <= 0x17B5) || (cp >= 0x180B && cp <= 0x180F) ||
-           (cp >= 0x200B && cp <= 0x200F) || (cp >= 0x202A && cp <= 0x202E) ||
-           (cp >= 0x2060 && cp <= 0x206F) || cp == 0x3164 || (cp >= 0xFE00 && cp <= 0xFE0F) ||
-           cp == 0xFEFF || cp == 0xFFA0 || (cp >= 0xFFF0 && cp <= 0xFFF8) ||
-           (cp >= 0x1BCA0 && cp <= 0x1BCA3) || (cp >= 0x1D173 && cp <= 0x1D17A) ||
-           (cp >= 0xE0000 && cp <= 0xE0FFF);
-}
-
 }  // namespace
 
 void CollectionFonts::variations(std::size_t font, const ShapeOptions& shape,
@@ -154,12 +142,7 @@ Status CollectionFonts::assign(const char32_t* text, std::size_t n, UnicodeBreak
             const char32_t c = text[k];
             vs15 |= c == kVs15;
             vs16 |= c == kVs16;
-            if (maybe_ignorable(c)) {
-                auto ignorable = has_unicode_property(c, UnicodeProperty::DefaultIgnorable);
-                if (!ignorable) return ignorable.error();
-                if (*ignorable) continue;
-            }
-            needed_.push_back(c);
+            if (!is_default_ignorable(c)) needed_.push_back(c);
         }
         std::uint16_t font = previous == kNoFont ? 0 : previous;
         if (!needed_.empty()) {

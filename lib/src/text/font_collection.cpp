@@ -4,7 +4,6 @@
 
 #include <utility>
 
-#include "text/layout_breaks.hpp"
 
 namespace bezel {
 
@@ -104,60 +103,48 @@ Expected<std::size_t> FontCollection::add(const FontSource& source, FontOrigin o
 std::size_t FontCollection::size() const { return impl_->entries.size(); }
 Font& FontCollection::font(std::size_t i) { return impl_->entries.at(i)->font; }
 Shaper& FontCollection::shaper(std::size_t i) { return impl_->entries.at(i)->shaper; }
-const FontSource& FontCollection::source(std::size_t i) const { return impl_->entries.at(i)->source; }
+const FontSource& FontCollection::source(std::size_t i) const {
+    return impl_->entries.at(i)->source;
+}
 FontOrigin FontCollection::origin(std::size_t i) const { return impl_->entries.at(i)->origin; }
 const FontMetrics& FontCollection::metrics(std::size_t i) const {
     return impl_->entries.at(i)->metrics;
 }
 bool FontCollection::is_colour(std::size_t i) const { return impl_->entries.at(i)->colour; }
 
-Expected<bool> FontCollection::covers(std::size_t i, const char32_t* cluster,
-                                      std::size_t n) const {
+bool FontCollection::covers(std::size_t i, const char32_t* cluster, std::size_t n) const {
     const Font& font = impl_->entries.at(i)->font;
     for (std::size_t k = 0; k < n; ++k) {
-        if (font.glyph_for_char(cluster[k])) continue;
-        // Asked only for characters the font lacks, so ICU is not loaded for covered text.
-        auto ignorable =
-            text_detail::has_unicode_property(cluster[k], text_detail::UnicodeProperty::DefaultIgnorable);
-        if (!ignorable) return ignorable.error();
-        if (!*ignorable) return false;
+        if (!font.glyph_for_char(cluster[k]) && !is_default_ignorable(cluster[k])) return false;
     }
     return true;
 }
 
-Expected<std::optional<std::size_t>> FontCollection::font_for(const std::u32string& cluster) {
-    for (std::size_t i = 0; i < size(); ++i) {
-        auto ok = covers(i, cluster.data(), cluster.size());
-        if (!ok) return ok.error();
-        if (*ok) return std::optional<std::size_t>(i);
-    }
-    if (!impl_->fallback) return std::optional<std::size_t>{};
+std::optional<std::size_t> FontCollection::font_for(const std::u32string& cluster) {
+    for (std::size_t i = 0; i < size(); ++i)
+        if (covers(i, cluster.data(), cluster.size())) return i;
+    if (!impl_->fallback) return std::nullopt;
     FallbackRequest request;
-    for (char32_t c : cluster) {
-        auto ignorable =
-            text_detail::has_unicode_property(c, text_detail::UnicodeProperty::DefaultIgnorable);
-        if (!ignorable) return ignorable.error();
-        if (!*ignorable) request.cluster.push_back(c);
-    }
+    for (char32_t c : cluster)
+        if (!is_default_ignorable(c)) request.cluster.push_back(c);
     request.outlines_only = impl_->outlines_only;
     auto source = impl_->fallback->font_for(request);
     if (!source) {
         add_warning(source.error().message);
-        return std::optional<std::size_t>{};
+        return std::nullopt;
     }
-    if (!*source) return std::optional<std::size_t>{};
+    if (!*source) return std::nullopt;
     for (std::size_t i = 0; i < size(); ++i)
         if (this->source(i).file == (*source)->file &&
             this->source(i).face_index == (*source)->face_index)
-            return std::optional<std::size_t>{};   // listed, and it did not cover the cluster
+            return std::nullopt;   // listed, and it did not cover the cluster
     auto added = add(**source, FontOrigin::System);
     if (!added) {
         add_warning(added.error().message);
-        return std::optional<std::size_t>{};
+        return std::nullopt;
     }
-    auto ok = covers(*added, cluster.data(), cluster.size());
-    if (!ok) return ok.error();
-    return *ok ? std::optional<std::size_t>(*added) : std::optional<std::size_t>{};
+    if (covers(*added, cluster.data(), cluster.size())) return *added;
+    return std::nullopt;
 }
 
 void FontCollection::set_fallback(std::shared_ptr<FallbackSource> fallback) {

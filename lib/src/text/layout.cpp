@@ -1,29 +1,20 @@
-// layout_text: paragraphs, script/direction runs, greedy line wrapping, alignment.
+// layout_text: paragraphs, bidi, lines, alignment and line spacing.
 //
-// Per paragraph (text between newlines): the bidi levels are resolved (bidi.hpp: FriBidi, UAX #9)
-// and the text itemized into runs of one script and one level (script_runs.hpp); each run is
-// shaped once, which
-// gives every cluster its advance. Lines are then filled greedily in logical order: a line
-// takes text up to the last break opportunity (layout_breaks.hpp) whose text, without trailing
-// spaces, fits width_px; a word with no opportunity that is wider than the line is cut at the
-// last cluster boundary that fits (at least one cluster per line). Each line's glyphs are the
-// slices of the paragraph's shaped runs that fall on it — reshaped only where a line cuts a run
-// inside a word, where shaping across the cut (joining, kerning) no longer applies — split where
-// L1 gives the line's trailing whitespace the paragraph level, ordered by level (L2) and placed
-// along the baseline.
+// Per paragraph (text between newlines): the bidi levels are resolved (bidi.hpp: FriBidi,
+// UAX #9), then ParagraphRuns (paragraph_runs.hpp) gives each grapheme cluster its font, shapes
+// runs of one script, level and font once and wraps the paragraph greedily into lines. Each
+// line's glyphs are the slices of those runs that fall on it, split where L1 gives the line's
+// trailing whitespace the paragraph level, ordered by level (L2) and placed along the baseline.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <limits>
 
 #include "bezel/layout.hpp"
 #include "text/bidi.hpp"
-#include "text/layout_breaks.hpp"
 #include "text/layout_common.hpp"
 #include "text/layout_fonts.hpp"
 #include "text/layout_vertical.hpp"
+#include "text/paragraph_runs.hpp"
 #include "text/script_runs.hpp"
-#include "text/shape_tags.hpp"
 #include "text/utf8_decode.hpp"
 
 namespace bezel {
@@ -36,12 +27,6 @@ Status check_length(const char* name, double v) {
     if (std::isfinite(v) && v >= 0) return ok_status();
     return Error{std::string("layout ") + name + " " + format_num(v) + ": must be a finite number >= 0"};
 }
-
-struct LineSpan {
-    std::size_t begin = 0, end = 0;   // paragraph-relative code point indices
-    bool soft_end = false;            // ended by wrapping (trailing spaces hang)
-    bool forced_begin = false, forced_end = false;   // cut inside a word
-};
 
 struct Piece {
     std::size_t first = 0, count = 0;   // in the line's glyph pool
@@ -56,12 +41,12 @@ struct LineExtent {
     }
 };
 
-// Everything one paragraph needs; members are reused across paragraphs.
-class ParagraphLayout {
+// One paragraph's lines; members are reused across paragraphs.
+class ParagraphLayout : private ParagraphRuns {
 public:
     ParagraphLayout(LayoutFonts& fonts, const ShapeOptions& shape, std::string_view text,
                     const std::vector<CodePoint>& cps)
-        : fonts_(fonts), shape_(shape), text_(text), cps_(cps) {}
+        : ParagraphRuns(fonts, shape, text, cps, false) {}
 
     // Lays out cps[begin, end) as lines appended to `out`: glyph x relative to the line's start,
     // y relative to its baseline; placement on the page comes after all lines are known.
@@ -71,171 +56,23 @@ public:
     std::uint8_t paragraph_level() const { return bidi_.paragraph_level(); }
 
 private:
-    std::uint32_t offset(std::size_t i) const {
-        return i < cps_.size() ? cps_[i].offset : static_cast<std::uint32_t>(text_.size());
-    }
-    Status shape_range(std::size_t a, std::size_t b, const ScriptRun& run, ShapedRun& into);
-    Status wrap(std::size_t m, double width_px);
-    // The width `line` will have once placed: its runs' advances, reshaped where it cuts a run
-    // inside a word (a joining or kerning change there changes the width).
-    Expected<double> placed_width(const LineSpan& line);
-    bool cut_in_word(const LineSpan& line, std::size_t glyph_end, std::size_t a, std::size_t b,
-                     const ScriptRun& run) const {
-        const std::size_t rb = run.begin - base_, re = run.end - base_;
-        if (a == rb && b == re) return false;
-        return (a == line.begin && a != rb && line.forced_begin) ||
-               (b == glyph_end && b != re && line.forced_end);
-    }
-    std::size_t trimmed(std::size_t a, std::size_t b) const {
-        while (b > a && is_break_space(cps_[base_ + b - 1].cp)) --b;
-        return b;
-    }
-    bool fits(std::size_t a, std::size_t b, double width_px) const {
-        return prefix_[trimmed(a, b)] - prefix_[a] <= width_px + kFitSlackPx;
-    }
     Status place_line(const LineSpan& line, TextLayout& out, std::vector<LineExtent>& extents);
     void add_extent(std::uint16_t font, LineExtent& extent) const;
 
-    LayoutFonts& fonts_;
-    const ShapeOptions& shape_;
-    std::string_view text_;
-    const std::vector<CodePoint>& cps_;
-    std::size_t base_ = 0;
     BidiParagraph bidi_;
-    UnicodeBreaks breaker_;
-    std::u32string chars_;
-    std::vector<ScriptRun> runs_;
-    std::vector<ShapedRun> shaped_;
-    std::vector<std::uint8_t> breaks_, boundary_, line_levels_;
-    std::vector<std::uint16_t> char_fonts_;
-    std::vector<double> prefix_;
-    std::vector<LineSpan> lines_;
+    std::vector<std::uint8_t> line_levels_;
     std::vector<ShapedGlyph> pool_;
     std::vector<Piece> pieces_;
     std::vector<std::uint8_t> levels_;
     std::vector<std::size_t> order_;
-    ShapedRun reshaped_;
 };
-
-Status ParagraphLayout::shape_range(std::size_t a, std::size_t b, const ScriptRun& run,
-                                    ShapedRun& into) {
-    ShapeOptions opts = shape_;
-    fonts_.variations(run.font, shape_, opts.variations);
-    opts.direction = (run.level & 1) != 0 ? Direction::RightToLeft : Direction::LeftToRight;
-    opts.script = tag_string(hb_script_to_iso15924_tag(run.script));
-    const std::uint32_t from = offset(a), to = offset(b);
-    auto shaped = fonts_.shaper(run.font).shape(text_.substr(from, to - from), opts);
-    if (!shaped) return shaped.error();
-    into = std::move(*shaped);
-    for (ShapedGlyph& g : into.glyphs) g.cluster += from;
-    return ok_status();
-}
-
-Expected<double> ParagraphLayout::placed_width(const LineSpan& line) {
-    double width = 0;
-    for (const ScriptRun& run : runs_) {
-        const std::size_t a = std::max(run.begin - base_, line.begin);
-        const std::size_t b = std::min(run.end - base_, line.end);
-        if (a >= b) continue;
-        if (cut_in_word(line, line.end, a, b, run)) {
-            if (auto ok = shape_range(base_ + a, base_ + b, run, reshaped_); !ok) return ok.error();
-            width += reshaped_.advance_px;
-        } else {
-            width += prefix_[b] - prefix_[a];
-        }
-    }
-    return width;
-}
-
-Status ParagraphLayout::wrap(std::size_t m, double width_px) {
-    lines_.clear();
-    if (width_px <= 0 || m == 0) {
-        lines_.push_back({0, m, false, false, false});
-        return ok_status();
-    }
-    auto next_boundary = [&](std::size_t x) {
-        ++x;
-        while (x < m && boundary_[x] == 0) ++x;
-        return x;
-    };
-    constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-    std::size_t start = 0, candidate = kNone;
-    bool start_forced = false;
-    for (std::size_t k = 1; k <= m;) {
-        if (k < m && breaks_[k] == 0) {
-            ++k;
-            continue;
-        }
-        if (k <= start || fits(start, k, width_px)) {
-            if (k > start) candidate = k;
-            ++k;
-            continue;
-        }
-        if (candidate != kNone) {
-            lines_.push_back({start, candidate, true, start_forced, false});
-            start = candidate;
-            start_forced = false;
-            candidate = kNone;
-            continue;   // the same k again, from the new start
-        }
-        // No opportunity in [start, k) and it does not fit: cut between clusters, at the last
-        // boundary that fits by the paragraph's advances, then back while the reshaped line
-        // does not (at least one cluster stays).
-        const std::size_t first = next_boundary(start);
-        std::size_t q = first;
-        for (std::size_t q2 = next_boundary(q); q2 < k && fits(start, q2, width_px);
-             q2 = next_boundary(q2))
-            q = q2;
-        while (q > first) {
-            auto w = placed_width({start, q, false, start_forced, true});
-            if (!w) return w.error();
-            if (*w <= width_px + kFitSlackPx) break;
-            do --q;
-            while (q > first && boundary_[q] == 0);
-        }
-        lines_.push_back({start, q, false, start_forced, true});
-        start = q;
-        start_forced = true;
-    }
-    if (start < m || lines_.empty()) lines_.push_back({start, m, false, start_forced, false});
-    return ok_status();
-}
 
 Status ParagraphLayout::run(std::size_t begin, std::size_t end, double width_px,
                             TextLayout& out, std::vector<LineExtent>& extents) {
-    base_ = begin;
-    const std::size_t m = end - begin;
-    chars_.resize(m);
-    for (std::size_t k = 0; k < m; ++k) chars_[k] = cps_[begin + k].cp;
-    if (auto ok = bidi_.resolve(chars_.data(), m, shape_.direction); !ok) return ok;
-    if (auto ok = fonts_.assign(chars_.data(), m, breaker_, char_fonts_); !ok) return ok;
-    itemize(cps_, begin, end, bidi_.levels(), char_fonts_, runs_);
-    shaped_.resize(runs_.size());
-    std::vector<double>& adv = prefix_;
-    adv.assign(m + 1, 0.0);
-    boundary_.assign(m, 0);
-    for (std::size_t r = 0; r < runs_.size(); ++r) {
-        if (auto ok = shape_range(runs_[r].begin, runs_[r].end, runs_[r], shaped_[r]); !ok)
-            return ok;
-        boundary_[runs_[r].begin - begin] = 1;
-        for (const ShapedGlyph& g : shaped_[r].glyphs) {
-            auto it = std::lower_bound(
-                cps_.begin() + static_cast<std::ptrdiff_t>(begin),
-                cps_.begin() + static_cast<std::ptrdiff_t>(end), g.cluster,
-                [](const CodePoint& c, std::uint32_t off) { return c.offset < off; });
-            const auto k = static_cast<std::size_t>(it - cps_.begin()) - begin;
-            if (k >= m) continue;
-            adv[k + 1] += g.x_advance_px;
-            boundary_[k] = 1;
-        }
-    }
-    for (std::size_t k = 0; k < m; ++k) prefix_[k + 1] += prefix_[k];   // now prefix sums
-    // Without a width no line is wrapped: the opportunities are not needed.
-    if (width_px > 0) {
-        if (auto ok = breaker_.line_breaks(chars_.data(), m, breaks_); !ok) return ok;
-    }
-    if (auto ok = wrap(m, width_px); !ok) return ok;
-    for (const LineSpan& line : lines_)
+    start(begin, end);
+    if (auto ok = bidi_.resolve(chars_.data(), chars_.size(), shape_.direction); !ok) return ok;
+    if (auto ok = shape_and_wrap(bidi_.levels(), width_px); !ok) return ok;
+    for (const LineSpan& line : spans_)
         if (auto ok = place_line(line, out, extents); !ok) return ok;
     return ok_status();
 }
@@ -251,42 +88,26 @@ void ParagraphLayout::add_extent(std::uint16_t font, LineExtent& extent) const {
 
 Status ParagraphLayout::place_line(const LineSpan& line, TextLayout& out,
                                    std::vector<LineExtent>& extents) {
-    const std::size_t glyph_end = line.soft_end ? trimmed(line.begin, line.end) : line.end;
+    const std::size_t end = glyph_end(line);
     pool_.clear();
     pieces_.clear();
     levels_.clear();
     bidi_.line_levels(line.begin, line.end, line_levels_);
     for (std::size_t r = 0; r < runs_.size(); ++r) {
         const ScriptRun& run = runs_[r];
-        const std::size_t rb = run.begin - base_, re = run.end - base_;
-        const std::size_t a = std::max(rb, line.begin), b = std::min(re, glyph_end);
+        const std::size_t a = std::max(run.begin - base_, line.begin);
+        const std::size_t b = std::min(run.end - base_, end);
         if (a >= b) continue;
-        const std::vector<ShapedGlyph>* glyphs = &shaped_[r].glyphs;
-        if (cut_in_word(line, glyph_end, a, b, run)) {
-            if (auto ok = shape_range(base_ + a, base_ + b, run, reshaped_); !ok) return ok;
-            glyphs = &reshaped_.glyphs;
-        }
+        auto glyphs = slice_glyphs(line, end, r, a, b);
+        if (!glyphs) return glyphs.error();
         // One piece per stretch of the slice at one line level: within a run the levels differ
         // only where L1 reset the line's trailing whitespace.
         for (std::size_t p = a; p < b;) {
             const std::uint8_t level = line_levels_[p - line.begin];
             std::size_t q = p + 1;
             while (q < b && line_levels_[q - line.begin] == level) ++q;
-            const std::uint32_t from = offset(base_ + p), to = offset(base_ + q);
             Piece piece{pool_.size(), 0, run.font};
-            // HarfBuzz keeps a run's clusters monotonic (ascending left to right, descending
-            // for a right-to-left run), so the glyphs of [from, to) are one stretch, found by
-            // two binary searches instead of a scan of the whole run per line.
-            const bool rtl = (run.level & 1) != 0;
-            auto before = [&](std::uint32_t bound) {
-                return [bound, rtl](const ShapedGlyph& g) {
-                    return rtl ? g.cluster >= bound : g.cluster < bound;
-                };
-            };
-            auto first = std::partition_point(glyphs->begin(), glyphs->end(),
-                                              before(rtl ? to : from));
-            auto last = std::partition_point(first, glyphs->end(), before(rtl ? from : to));
-            pool_.insert(pool_.end(), first, last);
+            append_clusters(**glyphs, r, p, q, pool_);
             piece.count = pool_.size() - piece.first;
             pieces_.push_back(piece);
             levels_.push_back(level);

@@ -147,7 +147,6 @@ Expected<bool> has_unicode_property(char32_t cp, UnicodeProperty property) {
     UProperty which = UCHAR_EMOJI_PRESENTATION;
     switch (property) {
         case UnicodeProperty::EmojiPresentation: which = UCHAR_EMOJI_PRESENTATION; break;
-        case UnicodeProperty::DefaultIgnorable: which = UCHAR_DEFAULT_IGNORABLE_CODE_POINT; break;
     }
     return api.has_property(static_cast<UChar32>(cp), which) != 0;
 }

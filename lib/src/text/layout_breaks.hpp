@@ -25,7 +25,6 @@ bool is_break_space(char32_t cp);
 // Binary character properties of ICU's Unicode data, for choosing a font per cluster.
 enum class UnicodeProperty : std::uint8_t {
     EmojiPresentation,   // drawn as emoji (colour) by default (UTS #51 Emoji_Presentation)
-    DefaultIgnorable,    // invisible unless supported (ZWJ, variation selectors, tags, ...)
 };
 // Errors only when ICU cannot be loaded.
 Expected<bool> has_unicode_property(char32_t cp, UnicodeProperty property);
