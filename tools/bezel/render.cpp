@@ -137,7 +137,11 @@ Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
                                 const TextRenderOptions& options, double stroke_px,
                                 MissingGlyphs& missing) {
     FontCollection& fonts = renderer.fonts();
-    if (auto set = fonts.font(0).set_variations(options.shape.variations); !set) return set.error();
+    // The first font at its own coordinates (a --font-family instance) and then the command
+    // line's, as TextRenderer sets them (layout.hpp).
+    std::vector<VariationSetting> first = fonts.source(0).variations;
+    first.insert(first.end(), options.shape.variations.begin(), options.shape.variations.end());
+    if (auto set = fonts.font(0).set_variations(first); !set) return set.error();
     auto layout = layout_text(fonts, text, options.shape, options.layout);
     if (!layout) return layout.error();
     missing = find_missing_glyphs(*layout, text);
