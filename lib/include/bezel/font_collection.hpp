@@ -81,6 +81,12 @@ public:
     // nullopt.
     std::optional<std::size_t> font_for(const std::u32string& cluster);
 
+    // The fallback source's font for a cluster no font of the list covers: asks the source,
+    // appends the font it names (FontOrigin::System) and returns its index when it covers
+    // request.cluster. nullopt: no source, no font, a font already listed, or one that cannot be
+    // opened or fails request.outlines_only (those two, and the source's errors, are warnings).
+    std::optional<std::size_t> fallback_font(const FallbackRequest& request);
+
     // Whether font i maps every code point of `cluster` except default-ignorable ones
     // (is_default_ignorable, system_fonts.hpp: ZWJ, variation selectors, tags; HarfBuzz draws
     // them as nothing when the font lacks them).

@@ -60,43 +60,24 @@ std::uint64_t CollectionFonts::fonts_with_needed() {
     return mask;
 }
 
-Expected<std::optional<std::uint16_t>> CollectionFonts::from_fallback(bool prefer_colour) {
-    FallbackSource* fallback = fonts_.fallback();
-    if (fallback == nullptr) return std::optional<std::uint16_t>{};
+std::optional<std::uint16_t> CollectionFonts::from_fallback(bool prefer_colour) {
+    if (fonts_.fallback() == nullptr) return std::nullopt;
     const bool single = needed_.size() == 1;
-    if (single && unfound_.count(needed_[0]) != 0) return std::optional<std::uint16_t>{};
+    if (single && unfound_.count(needed_[0]) != 0) return std::nullopt;
     request_.cluster = needed_;
     request_.prefer_colour = prefer_colour;
     request_.outlines_only = fonts_.outlines_only();
-    auto asked = fallback->font_for(request_);
-    if (!asked) fonts_.add_warning(asked.error().message);
-    const std::optional<FontSource> source = asked ? *asked : std::nullopt;
-    std::optional<std::uint16_t> found;
-    if (source) {
-        std::size_t index = fonts_.size();
-        for (std::size_t i = 0; i < fonts_.size(); ++i) {
-            const FontSource& s = fonts_.source(i);
-            if (s.file == source->file && s.face_index == source->face_index) index = i;
-        }
-        if (index == fonts_.size()) {
-            auto added = fonts_.add(*source, FontOrigin::System);
-            if (!added) {
-                fonts_.add_warning(added.error().message);
-                index = fonts_.size();
-            }
-        }
-        if (index < fonts_.size() && ((fonts_with_needed() >> index) & 1) != 0)
-            found = static_cast<std::uint16_t>(index);
-    }
+    const std::optional<std::size_t> found = fonts_.fallback_font(request_);
     if (!found && single) {
         if (unfound_.size() >= kMaxUnfoundRemembered) unfound_.clear();
         unfound_.insert(needed_[0]);
     }
-    return found;
+    if (!found) return std::nullopt;
+    return static_cast<std::uint16_t>(*found);
 }
 
-Expected<std::uint16_t> CollectionFonts::choose(std::uint16_t previous, bool prefer_colour,
-                                                bool prefer_text) {
+std::uint16_t CollectionFonts::choose(std::uint16_t previous, bool prefer_colour,
+                                      bool prefer_text) {
     const std::size_t n = fonts_.size();
     const std::uint64_t covering = fonts_with_needed();
     auto has = [&](std::size_t i) { return ((covering >> i) & 1) != 0; };
@@ -110,9 +91,7 @@ Expected<std::uint16_t> CollectionFonts::choose(std::uint16_t previous, bool pre
     for (int pass = prefer_text ? 0 : 1; pass < 2; ++pass)
         for (std::size_t i = 0; i < n; ++i)
             if (has(i) && (pass == 1 || !fonts_.is_colour(i))) return static_cast<std::uint16_t>(i);
-    auto found = from_fallback(prefer_colour);
-    if (!found) return found.error();
-    return found->value_or(0);
+    return from_fallback(prefer_colour).value_or(0);
 }
 
 Status CollectionFonts::assign(const char32_t* text, std::size_t n, UnicodeBreaks& breaks,
@@ -153,9 +132,7 @@ Status CollectionFonts::assign(const char32_t* text, std::size_t n, UnicodeBreak
                 if (!presentation) return presentation.error();
                 emoji = *presentation;
             }
-            auto chosen = choose(previous, emoji, vs15);
-            if (!chosen) return chosen.error();
-            font = *chosen;
+            font = choose(previous, emoji, vs15);
         }
         std::fill(out.begin() + static_cast<std::ptrdiff_t>(s),
                   out.begin() + static_cast<std::ptrdiff_t>(e), font);

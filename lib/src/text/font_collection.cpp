@@ -123,11 +123,15 @@ bool FontCollection::covers(std::size_t i, const char32_t* cluster, std::size_t 
 std::optional<std::size_t> FontCollection::font_for(const std::u32string& cluster) {
     for (std::size_t i = 0; i < size(); ++i)
         if (covers(i, cluster.data(), cluster.size())) return i;
-    if (!impl_->fallback) return std::nullopt;
     FallbackRequest request;
     for (char32_t c : cluster)
         if (!is_default_ignorable(c)) request.cluster.push_back(c);
     request.outlines_only = impl_->outlines_only;
+    return fallback_font(request);
+}
+
+std::optional<std::size_t> FontCollection::fallback_font(const FallbackRequest& request) {
+    if (!impl_->fallback) return std::nullopt;
     auto source = impl_->fallback->font_for(request);
     if (!source) {
         add_warning(source.error().message);
@@ -137,13 +141,13 @@ std::optional<std::size_t> FontCollection::font_for(const std::u32string& cluste
     for (std::size_t i = 0; i < size(); ++i)
         if (this->source(i).file == (*source)->file &&
             this->source(i).face_index == (*source)->face_index)
-            return std::nullopt;   // listed, and it did not cover the cluster
+            return std::nullopt;   // listed already, and no listed font covers the cluster
     auto added = add(**source, FontOrigin::System);
     if (!added) {
         add_warning(added.error().message);
         return std::nullopt;
     }
-    if (covers(*added, cluster.data(), cluster.size())) return *added;
+    if (covers(*added, request.cluster.data(), request.cluster.size())) return *added;
     return std::nullopt;
 }
 

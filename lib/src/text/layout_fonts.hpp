@@ -67,12 +67,12 @@ public:
 private:
     // The font for one cluster (code points needing a glyph in needed_), given the previous
     // cluster's font (kNoFont at the start of a paragraph).
-    Expected<std::uint16_t> choose(std::uint16_t previous, bool prefer_colour, bool prefer_text);
+    std::uint16_t choose(std::uint16_t previous, bool prefer_colour, bool prefer_text);
     // Bit i set: font i maps `cp` (remembered per code point, extended as fonts are added).
     std::uint64_t fonts_with(char32_t cp);
     // The fonts that map every code point of needed_.
     std::uint64_t fonts_with_needed();
-    Expected<std::optional<std::uint16_t>> from_fallback(bool prefer_colour);
+    std::optional<std::uint16_t> from_fallback(bool prefer_colour);
 
     // A direct-mapped memo of fonts_with: a page uses a few hundred distinct characters, each
     // looked up in every font once instead of once per occurrence.
