@@ -137,10 +137,9 @@ Expected<Image> render_outlined(TextRenderer& renderer, const std::string& text,
                                 const TextRenderOptions& options, double stroke_px,
                                 MissingGlyphs& missing) {
     FontCollection& fonts = renderer.fonts();
-    // The first font at its own coordinates (a --font-family instance) and then the command
-    // line's, as TextRenderer sets them (layout.hpp).
-    std::vector<VariationSetting> first = fonts.source(0).variations;
-    first.insert(first.end(), options.shape.variations.begin(), options.shape.variations.end());
+    // The first font's coordinates as TextRenderer sets them (its own, then the command line's).
+    std::vector<VariationSetting> first;
+    fonts.variations_for(0, options.shape.variations, first);
     if (auto set = fonts.font(0).set_variations(first); !set) return set.error();
     auto layout = layout_text(fonts, text, options.shape, options.layout);
     if (!layout) return layout.error();

@@ -73,6 +73,11 @@ public:
     const FontSource& source(std::size_t i) const;
     FontOrigin origin(std::size_t i) const;
     const FontMetrics& metrics(std::size_t i) const;
+    // The design coordinates font i is shaped and drawn at (layout.hpp): its FontSource's, and
+    // for the first font `shape_variations` (ShapeOptions::variations) after them, a later
+    // setting of an axis winning. Written to `out`.
+    void variations_for(std::size_t i, const std::vector<VariationSetting>& shape_variations,
+                        std::vector<VariationSetting>& out) const;
     // A colour font (COLR, CBDT, sbix): preferred for emoji presentation.
     bool is_colour(std::size_t i) const;
 

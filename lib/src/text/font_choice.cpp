@@ -40,8 +40,7 @@ bool is_common(char32_t cp) {
 
 void CollectionFonts::variations(std::size_t font, const ShapeOptions& shape,
                                  std::vector<VariationSetting>& out) const {
-    out = fonts_.source(font).variations;
-    if (font == 0) out.insert(out.end(), shape.variations.begin(), shape.variations.end());
+    fonts_.variations_for(font, shape.variations, out);
 }
 
 std::uint64_t CollectionFonts::fonts_with(char32_t cp) {

@@ -110,6 +110,12 @@ FontOrigin FontCollection::origin(std::size_t i) const { return impl_->entries.a
 const FontMetrics& FontCollection::metrics(std::size_t i) const {
     return impl_->entries.at(i)->metrics;
 }
+void FontCollection::variations_for(std::size_t i,
+                                    const std::vector<VariationSetting>& shape_variations,
+                                    std::vector<VariationSetting>& out) const {
+    out = source(i).variations;
+    if (i == 0) out.insert(out.end(), shape_variations.begin(), shape_variations.end());
+}
 bool FontCollection::is_colour(std::size_t i) const { return impl_->entries.at(i)->colour; }
 
 bool FontCollection::covers(std::size_t i, const char32_t* cluster, std::size_t n) const {

@@ -86,8 +86,7 @@ struct TextRenderer::Impl {
             slots.push_back(std::move(slot));
         }
         for (std::size_t i = 0; i < slots.size(); ++i) {
-            wanted = fonts.source(i).variations;
-            if (i == 0) wanted.insert(wanted.end(), shape.variations.begin(), shape.variations.end());
+            fonts.variations_for(i, shape.variations, wanted);
             if (same_variations(wanted, slots[i].applied)) continue;
             Font& font = fonts.font(i);
             if (auto set = font.set_variations(wanted); !set) {
