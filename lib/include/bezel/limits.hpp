@@ -63,6 +63,19 @@ inline constexpr int kMaxFaceIndex = 0xFFFF;
 // sort of a real document while a caller cycling through patterns cannot grow memory without end.
 inline constexpr std::size_t kMaxSystemFontLists = 32;
 
+// --- paint (colour glyphs) -----------------------------------------------------------------------
+// Deepest a COLR paint graph may nest (PaintColrGlyph, PaintGlyph, transforms and composites each
+// count a level): HarfBuzz's and Skia's limit too. Real emoji nest under 16; a graph that loops
+// would otherwise recurse until the stack overflows, so past it the glyph is an Error.
+inline constexpr int kMaxPaintDepth = 64;
+// Most paint nodes one colour glyph may visit, a node shared by several parents counting at each
+// visit: a DAG of depth 64 can reach 2^64 paths, so depth alone does not bound the work. The
+// largest emoji of Noto's and Twitter's COLRv1 sets visit a few hundred.
+inline constexpr std::size_t kMaxPaintNodes = std::size_t{1} << 16;
+// Most bytes of one colour bitmap strike image (CBDT/sbix PNG) decoded: a 4096 × 4096 RGBA
+// image. Emoji strikes are 136 or 160 px; a PNG declaring more is refused before it is decoded.
+inline constexpr std::size_t kMaxColorBitmapBytes = std::size_t{64} << 20;
+
 // --- text -------------------------------------------------------------------------------------
 // Longest text one shape/layout/render call accepts, in bytes of UTF-8 (16 MiB). Past it, Error.
 inline constexpr std::size_t kMaxTextBytes = std::size_t{1} << 24;

@@ -1,0 +1,81 @@
+// bezel/color_glyph.hpp — a font's colour glyphs, read through FreeType: COLR version 1 paint
+// graphs and version 0 layers with their CPAL palettes (as bezel/paint.hpp's ColorGlyph, painted by
+// bezel), and CBDT/CBLC and sbix bitmap strikes.
+//
+// The route is FreeType's COLR functions (FT_Get_Color_Glyph_Paint, FT_Get_Paint,
+// FT_Get_Colorline_Stops, FT_Get_Color_Glyph_ClipBox, FT_Get_Color_Glyph_Layer, FT_Palette_*) and
+// FT_LOAD_COLOR for bitmaps. Variable COLRv1 paints are read at the font's default instance: the
+// FreeType this links (2.12) returns the paints' default values without their variation deltas.
+// SVG-in-OpenType glyphs are not drawn in colour: color_format() reports them as Svg, and they are
+// drawn from their outline (or as .notdef) like any other glyph, with a warning from the callers.
+//
+// Threading: as Font (these calls load into the face).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bezel/expected.hpp"
+#include "bezel/font.hpp"
+#include "bezel/paint.hpp"
+
+namespace bezel {
+
+// How a glyph is coloured, the first of these the font has for it, in the order bezel prefers
+// them: COLRv1, COLRv0, a bitmap (CBDT, sbix), SVG (not drawn), or none.
+enum class ColorFormat : std::uint8_t { None, ColrV1, ColrV0, Bitmap, Svg };
+const char* color_format_name(ColorFormat format);   // "none", "COLRv1", "COLRv0", "bitmap", "SVG"
+
+// Which colour tables the face has (for `bezel info`).
+struct ColorTables {
+    bool colr_v0 = false, colr_v1 = false, cpal = false, cbdt = false, sbix = false, svg = false;
+    bool any() const { return colr_v0 || colr_v1 || cbdt || sbix || svg; }
+};
+ColorTables color_tables(Font& font);
+
+ColorFormat color_format(Font& font, GlyphId gid);
+
+// A CPAL palette: its entries (straight sRGB) and the CPAL v1 flags.
+struct Palette {
+    std::vector<Rgba8> entries;
+    bool for_light_background = false, for_dark_background = false;
+};
+// The font's palettes (empty without CPAL).
+std::vector<Palette> palettes(Font& font);
+
+// Which colours a colour glyph is built with.
+struct ColorGlyphOptions {
+    int palette = 0;   // index into palettes(); 0 is the default palette
+    // Entries that replace the chosen palette's (hb-view's --custom-palette "index=colour"):
+    // entry `index` becomes `color`. An index past the palette is an error.
+    struct Entry {
+        int index = 0;
+        Rgba8 color;
+    };
+    std::vector<Entry> custom;
+};
+
+// The COLR paint graph of `gid` (version 1, or version 0's layers as PaintLayers of
+// PaintGlyph(PaintSolid)), with palette colours resolved and every outline it clips to loaded in
+// font units (y up). The graph is walked with kMaxPaintDepth and kMaxPaintNodes: a graph that
+// loops or is deeper is an error naming the glyph ("glyph 12 (name): COLR paint graph nests
+// deeper than 64"), as are a palette index out of range (naming the index and the count), a glyph
+// without COLR data, and a damaged table FreeType reports.
+Expected<ColorGlyph> load_color_glyph(Font& font, GlyphId gid, const ColorGlyphOptions& options);
+
+// A bitmap colour glyph from the strike nearest the size (the smallest strike at least as large,
+// else the largest), as FreeType decodes it (FT_LOAD_COLOR: BGRA, premultiplied) converted to
+// premultiplied RGBA, with its placement at the strike's size.
+struct ColorBitmap {
+    std::vector<std::uint8_t> rgba;   // premultiplied R, G, B, A; rows packed
+    int width = 0, height = 0;
+    double strike_px = 0;             // the strike's pixels per em
+    int left = 0, top = 0;            // bitmap_left / bitmap_top at strike_px (top: rows above the baseline)
+    double advance_px = 0;            // at strike_px
+    ConstRgbaView view() const { return {rgba.data(), width, height, 4 * std::ptrdiff_t{width}}; }
+};
+// Errors name the glyph: no bitmap for it, a damaged or oversized image (kMaxColorBitmapBytes).
+Expected<ColorBitmap> load_color_bitmap(Font& font, GlyphId gid, double size_px);
+
+}  // namespace bezel
