@@ -698,6 +698,76 @@ TEST(Paint, BlendRgbaOfAnOpaqueColourGlyphEqualsBlendMask) {
     EXPECT_EQ(c.at(0, 0), (Rgba8{0, 0, 0, 255}));
 }
 
+// --- Hostile graphs ---------------------------------------------------------------------------------
+TEST(Paint, RandomGraphsEitherPaintPremultipliedPixelsOrFailCleanly) {
+    // Fixed seed; every node kind, indices sometimes out of range or looping, extreme numbers
+    // (huge, tiny, zero scales, degenerate gradients). Each paint must return, and a success
+    // must write premultiplied bytes (colour ≤ alpha) everywhere.
+    std::uint64_t state = 0x9E3779B97F4A7C15ull;
+    auto next = [&]() {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        return state;
+    };
+    auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * (next() % 1000000) / 1e6; };
+    auto pick = [&](std::initializer_list<double> v) { return *(v.begin() + next() % v.size()); };
+    auto num = [&]() { return next() % 8 == 0 ? pick({0.0, 1e12, -1e12, 1e-12, 1e300}) : uniform(-40, 40); };
+    Path sq, circle;
+    test::add_rect(sq, -5, -5, 25, 30);
+    test::add_circle(circle, {10, 10}, 12);
+    int painted = 0, refused = 0;
+    Painter painter;
+    for (int iter = 0; iter < 400; ++iter) {
+        ColorGlyph g;
+        g.outlines = {sq, circle};
+        const PaintIndex n = static_cast<PaintIndex>(1 + next() % 12);
+        auto child = [&]() { return static_cast<PaintIndex>(next() % 17 == 0 ? n + 3 : next() % n); };
+        auto stops = [&]() {
+            ColorLine l;
+            l.extend = static_cast<Extend>(next() % 3);
+            const int k = static_cast<int>(1 + next() % 4);
+            float o = static_cast<float>(uniform(-2, 0));
+            for (int i = 0; i < k; ++i) {
+                o += static_cast<float>(next() % 3 == 0 ? 0.0 : uniform(0, 1.5));
+                l.stops.push_back({o, color(float(uniform(0, 1)), float(uniform(0, 1)),
+                                            float(uniform(0, 1)), float(uniform(0, 1)))});
+            }
+            return l;
+        };
+        for (PaintIndex i = 0; i < n; ++i) {
+            switch (next() % 9) {
+                case 0: g.nodes.push_back(PaintLayers{{child(), child()}}); break;
+                case 1: g.nodes.push_back(PaintSolid{color(0.3f, 0.6f, 0.9f, 0.7f)}); break;
+                case 2: g.nodes.push_back(PaintLinearGradient{stops(), {num(), num()}, {num(), num()}, {num(), num()}}); break;
+                case 3: g.nodes.push_back(PaintRadialGradient{stops(), {num(), num()}, {num(), num()}, std::fabs(num()), std::fabs(num())}); break;
+                case 4: g.nodes.push_back(PaintSweepGradient{stops(), {num(), num()}, uniform(-720, 720), uniform(-720, 720)}); break;
+                case 5: g.nodes.push_back(PaintGlyph{static_cast<std::uint32_t>(next() % 3), child()}); break;
+                case 6: g.nodes.push_back(PaintTransform{Affine{num() / 20, num() / 20, num() / 20, num() / 20, num(), num()}, child()}); break;
+                case 7: g.nodes.push_back(PaintColrGlyph{child(), next() % 2 ? std::optional<Rect>(Rect{num(), num(), num(), num()}) : std::nullopt}); break;
+                default: g.nodes.push_back(PaintComposite{child(), child(), static_cast<CompositeMode>(next() % kCompositeModeCount)}); break;
+            }
+        }
+        if (next() % 4 == 0) g.clip = Rect{-2, -2, 30, 30};
+        Target t(24, 24, 5);
+        PaintOptions o;
+        o.transform = flip(24);
+        if (painter.paint(g, o, t.view()).ok()) {
+            ++painted;
+            for (int y = 0; y < 24; ++y)
+                for (int x = 0; x < 24; ++x) {
+                    const auto p = t.at(x, y);
+                    ASSERT_LE(std::max({p[0], p[1], p[2]}), p[3]) << "iteration " << iter;
+                }
+        } else {
+            ++refused;
+            ASSERT_EQ(t.at(3, 3), (std::array<int, 4>{5, 5, 5, 5})) << "a refused paint wrote";
+        }
+    }
+    EXPECT_GT(painted, 100);
+    EXPECT_GT(refused, 20);
+}
+
 // --- Scratch ----------------------------------------------------------------------------------------
 TEST(Paint, SecondPaintAllocatesNothing) {
     ColorGlyph g;

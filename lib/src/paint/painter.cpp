@@ -78,6 +78,7 @@ struct Painter::Impl {
     // The pixel box of a target-space rectangle, within `within`.
     static Clip box_within(const Rect& r, const Clip& within) {
         Clip c;
+        // is_empty() is also true for a NaN side: such a box covers nothing.
         if (r.is_empty()) return c;
         auto lo = [](double v, int min, int max) {
             return static_cast<int>(std::clamp(std::floor(v), double(min), double(max)));
@@ -232,6 +233,9 @@ struct Painter::Impl {
             device = device.union_with(box_polygon.points.back());
         }
         box_polygon.contour_ends.push_back(4);
+        if (!(std::isfinite(device.x0) && std::isfinite(device.y0) && std::isfinite(device.x1) &&
+              std::isfinite(device.y1)))
+            return fail(Error{"clip box is not finite in target pixels"});
         inner = box_within(r.is_empty() ? Rect::empty() : device, outer);
         if (inner.empty()) return true;
         float* m = mask(level);
