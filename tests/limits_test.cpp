@@ -12,6 +12,7 @@
 #include "bezel/image.hpp"
 #include "bezel/intersect.hpp"
 #include "bezel/limits.hpp"
+#include "bezel/paint.hpp"
 #include "bezel/path.hpp"
 #include "bezel/raster.hpp"
 #include "bezel/smooth.hpp"
@@ -176,6 +177,37 @@ TEST(Limits, SurfacePastkMaxSurfacePatchesAndTessellationWallsIsAnError) {
     expect_error(validate_patches(none, "teapot"), "teapot");
     expect_error(bspline_grid(std::vector<Vec3>(16), kMaxBSplineGridSide + 1, 4),
                  std::to_string(kMaxBSplineGridSide));
+}
+
+TEST(Limits, PaintGraphDeeperThankMaxPaintDepthIsAnError) {
+    // A chain of transforms kMaxPaintDepth nodes long (the last a fill) is allowed; one more
+    // level is refused, by validate() and by the painter, before anything is painted.
+    ColorGlyph g;
+    for (PaintIndex i = 0; i + 1 < static_cast<PaintIndex>(kMaxPaintDepth); ++i)
+        g.nodes.push_back(PaintTransform{Affine::identity(), i + 1});
+    g.nodes.push_back(PaintSolid{});
+    EXPECT_TRUE(validate(g));
+    g.nodes.back() = PaintTransform{Affine::identity(), static_cast<PaintIndex>(g.nodes.size())};
+    g.nodes.push_back(PaintSolid{});
+    expect_error(validate(g), std::to_string(kMaxPaintDepth));
+    std::uint8_t px[4] = {1, 2, 3, 4};
+    Painter painter;
+    expect_error(painter.paint(g, {}, RgbaView{px, 1, 1, 4}), std::to_string(kMaxPaintDepth));
+    EXPECT_EQ(px[0], 1);
+}
+
+TEST(Limits, PaintGraphVisitingMoreThankMaxPaintNodesIsAnError) {
+    // Layer lists naming the next level twice: level k is reached 2^k times. 15 levels visit
+    // 2^16 − 1 nodes (allowed); 16 levels visit 2^17 − 1, refused.
+    auto dag = [](PaintIndex levels) {
+        ColorGlyph g;
+        for (PaintIndex i = 0; i < levels; ++i) g.nodes.push_back(PaintLayers{{i + 1, i + 1}});
+        g.nodes.push_back(PaintSolid{});
+        return g;
+    };
+    static_assert(kMaxPaintNodes == (std::size_t{1} << 16), "the levels below assume 2^16");
+    EXPECT_TRUE(validate(dag(15)));
+    expect_error(validate(dag(16)), std::to_string(kMaxPaintNodes));
 }
 
 TEST(Limits, ImageWiderThankMaxImageDimIsAnError) {
