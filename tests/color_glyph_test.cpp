@@ -403,6 +403,16 @@ TEST(BadColr, SharedSubgraphsVisitedPastTheNodeBudgetAreAnError) {
         << g.error().message;
 }
 
+TEST(BadColr, GradientsHoldingMoreThankMaxPaintColorStopsAreAnError) {
+    Font f = open_font(data_path("colr_stops.ttf"));
+    auto g = load_color_glyph(f, 3, {});   // 32 reaches of a 2100-stop gradient
+    ASSERT_FALSE(g.ok());
+    EXPECT_NE(g.error().message.find("glyph 3 (stops): COLR gradients hold more than " +
+                                     std::to_string(kMaxPaintColorStops) + " colour stops"),
+              std::string::npos)
+        << g.error().message;
+}
+
 TEST(BadColr, PaletteIndexPastCpalIsAnErrorNamingIndexAndCount) {
     Font f = open_font(data_path("colr_bad_palette.ttf"));
     auto v1 = load_color_glyph(f, 3, {});   // bad_solid: PaintSolid index 7
@@ -488,6 +498,18 @@ TEST(ColorBitmap, SbixImageIsPlacedByItsOriginOffsets) {
     EXPECT_EQ(b->top, -27 + 128);
     EXPECT_DOUBLE_EQ(b->advance_px, 1275.0 * 109 / 1024);
     EXPECT_GT(inked_premultiplied_pixels(*b), 128 * 128 / 3);
+}
+
+TEST(ColorBitmap, ImageLargerThankMaxColorBitmapBytesIsRefusedFromItsHeader) {
+    // The PNG declares 5000 × 5000 and holds no pixel data: decoding it would fail after FreeType
+    // allocated 100 MB; bezel refuses it from the header first.
+    Font f = open_font(data_path("sbix_huge.ttf"));
+    auto b = load_color_bitmap(f, 3, 100);
+    ASSERT_FALSE(b.ok());
+    EXPECT_NE(b.error().message.find("glyph 3 (huge): colour bitmap 5000x5000 is larger than " +
+                                     std::to_string(kMaxColorBitmapBytes >> 20) + " MiB of RGBA"),
+              std::string::npos)
+        << b.error().message;
 }
 
 TEST(ColorBitmap, BadRequestsAreErrorsNamingTheGlyph) {

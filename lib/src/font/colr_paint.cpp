@@ -83,6 +83,7 @@ private:
     std::vector<std::uint64_t> cost_;
     std::vector<int> height_;
     std::uint64_t visits_ = 0;
+    std::size_t stops_ = 0, outline_points_ = 0;   // against kMaxPaintColorStops, kMaxPaintOutlinePoints
     std::unordered_map<GlyphId, PaintIndex> colr_glyph_;   // PaintColrGlyph nodes built, by glyph
     std::vector<GlyphId> active_;                          // PaintColrGlyphs being built (a stack)
     std::unordered_map<GlyphId, std::uint32_t> outline_;   // outlines loaded, by glyph
@@ -127,6 +128,9 @@ private:
         const std::uint32_t count = read_u16(b_, o + 1);
         const std::size_t stride = var ? 10 : 6;   // ColorStop, VarColorStop (+ varIndexBase)
         if (!fits(b_, o + 3, std::uint64_t{stride} * count)) return damaged("colour stops past the end", offset);
+        stops_ += count;
+        if (stops_ > kMaxPaintColorStops)
+            return fail("COLR gradients hold more than " + std::to_string(kMaxPaintColorStops) + " colour stops");
         line.stops.reserve(count);
         for (std::uint32_t i = 0; i < count; ++i) {
             const std::size_t s = o + 3 + i * stride;
@@ -146,6 +150,9 @@ private:
         if (auto it = outline_.find(gid); it != outline_.end()) return it->second;
         Expected<Path> path = ctx_.load_outline(gid);
         if (!path) return fail("outline of " + ctx_.glyph_label(gid) + ": " + path.error().message);
+        outline_points_ += path->points().size();
+        if (outline_points_ > kMaxPaintOutlinePoints)
+            return fail("COLR outlines hold more than " + std::to_string(kMaxPaintOutlinePoints) + " points");
         const auto index = static_cast<std::uint32_t>(out_.outlines.size());
         out_.outlines.push_back(std::move(*path));
         outline_.emplace(gid, index);

@@ -2,8 +2,8 @@
 // (OpenType 1.9 'COLR'). The version 1 paint graph is colr_paint.cpp.
 #include "font/colr_table.hpp"
 
-#include <algorithm>
 #include <string>
+#include <unordered_map>
 
 #include "bezel/limits.hpp"
 
@@ -150,7 +150,8 @@ Expected<ColorGlyph> build_colr_v0(const ColrTable& table, GlyphId gid, const Co
                      std::to_string(kMaxPaintNodes) + " nodes"};
     ColorGlyph out;
     PaintLayers root;
-    std::vector<std::pair<GlyphId, std::uint32_t>> outline_of;   // glyph → index in out.outlines
+    std::unordered_map<GlyphId, std::uint32_t> outline_of;       // glyph → index in out.outlines
+    std::size_t points = 0;                                      // against kMaxPaintOutlinePoints
     for (std::uint32_t i = 0; i < layers->count; ++i) {
         const std::uint32_t index = layers->first + i;
         const std::optional<ColrTable::V0Layer> layer = table.v0_layer(index);
@@ -173,18 +174,20 @@ Expected<ColorGlyph> build_colr_v0(const ColrTable& table, GlyphId gid, const Co
             color.color = context.palette[layer->palette_index];
         }
         std::uint32_t outline = 0;
-        auto known = std::find_if(outline_of.begin(), outline_of.end(),
-                                  [&](const auto& e) { return e.first == layer->glyph; });
-        if (known != outline_of.end()) {
+        if (auto known = outline_of.find(layer->glyph); known != outline_of.end()) {
             outline = known->second;
         } else {
             Expected<Path> path = context.load_outline(layer->glyph);
             if (!path)
                 return Error{context.file + ": " + context.glyph_label(gid) + ": outline of " +
                              context.glyph_label(layer->glyph) + ": " + path.error().message};
+            points += path->points().size();
+            if (points > kMaxPaintOutlinePoints)
+                return Error{context.file + ": " + context.glyph_label(gid) + ": COLR outlines hold more than " +
+                             std::to_string(kMaxPaintOutlinePoints) + " points"};
             outline = static_cast<std::uint32_t>(out.outlines.size());
             out.outlines.push_back(std::move(*path));
-            outline_of.emplace_back(layer->glyph, outline);
+            outline_of.emplace(layer->glyph, outline);
         }
         const auto solid = static_cast<PaintIndex>(out.nodes.size());
         out.nodes.emplace_back(PaintSolid{color});

@@ -91,13 +91,15 @@ struct ColrContext {
 // kMaxPaintDepth and kMaxPaintNodes (a node reached twice counts twice, as the painter visits it).
 // PaintColrGlyph of one glyph id is built once and shared; each PaintGlyph outline is loaded once
 // per glyph id. Errors start with the file and glyph_label(gid) and say what: the graph loops (a PaintColrGlyph
-// inside itself), nests deeper than kMaxPaintDepth, visits more than kMaxPaintNodes, a palette
+// inside itself), nests deeper than kMaxPaintDepth, visits more than kMaxPaintNodes, holds more
+// than kMaxPaintColorStops colour stops or kMaxPaintOutlinePoints outline points, a palette
 // index out of range (index and count), a glyph id out of range, an unknown paint format or
 // composite mode, an offset past the end of the table, an outline that does not load.
 Expected<ColorGlyph> build_colr_v1(const ColrTable& table, GlyphId gid, const ColrContext& context);
 
-// Version 0: PaintLayers of PaintGlyph(PaintSolid), bottom layer first (precondition:
-// table.v0_layers(gid)). Errors as build_colr_v1's for palette and glyph indices and outlines.
+// Version 0: PaintLayers of PaintGlyph(PaintSolid), bottom layer first, each layer glyph's outline
+// loaded once (precondition: table.v0_layers(gid)). Errors as build_colr_v1's for palette and
+// glyph indices, outlines and the node and point budgets, and a layer record past the table.
 Expected<ColorGlyph> build_colr_v0(const ColrTable& table, GlyphId gid, const ColrContext& context);
 
 // Big-endian reads at a byte offset. Preconditions: the bytes are inside `b` (callers check

@@ -13,6 +13,12 @@ beside this script; needs fontTools, Debian's python3-fonttools):
   colr_wide.ttf         COLR version 1 glyph "wide": 17 PaintComposite nested, each with source
                         and backdrop the same child, then PaintSolid: 18 levels deep, but
                         painting it visits 2^18 - 1 nodes (the node budget's case).
+  colr_stops.ttf        COLR version 1 glyph "stops": 5 PaintComposite nested as in colr_wide
+                        over PaintGlyph(square, PaintLinearGradient) whose colour line holds
+                        2100 stops: 32 gradients reached, 67,200 stops in all.
+  sbix_huge.ttf         sbix strike (100 ppem) whose glyph "huge" is a PNG declaring 5000 × 5000
+                        pixels (100 MB of RGBA, past kMaxColorBitmapBytes) with no pixel data:
+                        refused from its header, never decoded.
   colr_bad_palette.ttf  CPAL with 2 entries; "bad_solid" (version 1) paints PaintSolid with
                         palette index 7, "bad_layer" (version 0) a layer with palette index 9.
 
@@ -20,6 +26,7 @@ The outputs are committed; run again only to change them.
 """
 import os
 import struct
+import zlib
 
 from fontTools.colorLib.builder import buildCOLR, buildCPAL
 from fontTools.fontBuilder import FontBuilder
@@ -127,6 +134,48 @@ def make_wide():
     fb.save(os.path.join(HERE, "colr_wide.ttf"))
 
 
+def make_stops():
+    fb = base_font(["stops"])
+    fb.font["CPAL"] = buildCPAL([[(1.0, 0.0, 0.0, 1.0)]])
+    header = struct.pack(">HHIIHIIIII", 1, 0, 0, 0, 0, 34, 0, 0, 0, 0)
+    base_list = struct.pack(">IHI", 1, fb.font.getGlyphID("stops"), 10)
+    composite = struct.pack(">B", 32) + (8).to_bytes(3, "big") + struct.pack(">B", 3) + (8).to_bytes(3, "big")
+    glyph = struct.pack(">B", 10) + (6).to_bytes(3, "big") + struct.pack(">H", fb.font.getGlyphID("square"))
+    # PaintLinearGradient: format 4, Offset24 colour line (right after its 16 bytes), six FWORDs.
+    linear = struct.pack(">B", 4) + (16).to_bytes(3, "big") + struct.pack(">6h", 0, 0, 1000, 0, 0, 1000)
+    # ColorLine: extend pad, numStops, then (F2Dot14 offset, paletteIndex, F2Dot14 alpha).
+    stops = 2100
+    line = struct.pack(">BH", 0, stops) + b"".join(struct.pack(">hHh", i * 16384 // stops, 0, 0x4000)
+                                                    for i in range(stops))
+    colr = DefaultTable("COLR")
+    colr.data = header + base_list + composite * 5 + glyph + linear + line
+    fb.font["COLR"] = colr
+    fb.save(os.path.join(HERE, "colr_stops.ttf"))
+
+
+def png_chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+
+def make_sbix_huge():
+    from fontTools.ttLib import newTable
+    from fontTools.ttLib.tables.sbixGlyph import Glyph as SbixGlyph
+    from fontTools.ttLib.tables.sbixStrike import Strike
+    fb = base_font(["huge"])
+    # IHDR: width, height, bit depth 8, colour type 6 (RGBA), compression, filter, interlace.
+    png = (b"\x89PNG\r\n\x1a\n" + png_chunk(b"IHDR", struct.pack(">IIBBBBB", 5000, 5000, 8, 6, 0, 0, 0)) +
+           png_chunk(b"IDAT", zlib.compress(b"")) + png_chunk(b"IEND", b""))
+    sbix = newTable("sbix")
+    strike = Strike(ppem=100, resolution=72)
+    for name in fb.font.getGlyphOrder():
+        strike.glyphs[name] = SbixGlyph(glyphName=name)
+    strike.glyphs["huge"] = SbixGlyph(glyphName="huge", graphicType="png ", originOffsetX=0, originOffsetY=0,
+                                      imageData=png)
+    sbix.strikes[100] = strike
+    fb.font["sbix"] = sbix
+    fb.save(os.path.join(HERE, "sbix_huge.ttf"))
+
+
 def make_bad_palette():
     fb = base_font(["bad_solid", "bad_layer"])
     fb.font["CPAL"] = buildCPAL([[(1.0, 0.0, 0.0, 1.0), (0.0, 0.0, 1.0, 1.0)]])
@@ -142,4 +191,6 @@ if __name__ == "__main__":
     make_loop()
     make_deep()
     make_wide()
+    make_stops()
+    make_sbix_huge()
     make_bad_palette()
