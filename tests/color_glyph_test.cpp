@@ -96,6 +96,15 @@ TEST(ColorFormat, EachGlyphReportsItsTable) {
     EXPECT_STREQ(color_format_name(ColorFormat::Svg), "SVG");
 }
 
+TEST(ColorFormat, SvgGlyphIsReportedNotDrawn) {
+    Font f = open_font(data_path("svg.ttf"));
+    EXPECT_TRUE(color_tables(f).svg);
+    EXPECT_FALSE(color_tables(f).colr_v1);
+    EXPECT_EQ(color_format(f, 3), ColorFormat::Svg);    // "drawn", the SVG document's glyph
+    EXPECT_EQ(color_format(f, 1), ColorFormat::None);   // square: not in the document index
+    EXPECT_FALSE(load_color_glyph(f, 3, {}).ok());
+}
+
 TEST(Palettes, TestGlyphsPalettesHaveTheirEntriesAndTypeFlags) {
     Font f = test_glyphs();
     const std::vector<Palette> p = palettes(f);

@@ -19,6 +19,8 @@ beside this script; needs fontTools, Debian's python3-fonttools):
   sbix_huge.ttf         sbix strike (100 ppem) whose glyph "huge" is a PNG declaring 5000 × 5000
                         pixels (100 MB of RGBA, past kMaxColorBitmapBytes) with no pixel data:
                         refused from its header, never decoded.
+  svg.ttf               an 'SVG ' table whose one document draws glyph "drawn" (for
+                        color_format's Svg; bezel does not draw SVG glyphs in colour).
   colr_bad_palette.ttf  CPAL with 2 entries; "bad_solid" (version 1) paints PaintSolid with
                         palette index 7, "bad_layer" (version 0) a layer with palette index 9.
 
@@ -69,6 +71,10 @@ def base_font(colour_glyphs):
     fb.setupNameTable({"familyName": "bezel COLR test", "styleName": "Regular"})
     fb.setupOS2()
     fb.setupPost()
+    # Fixed head dates (2024-01-01, seconds since 1904), so that running the script again writes
+    # the same bytes.
+    fb.updateHead(created=3786825600, modified=3786825600)
+    fb.font.recalcTimestamp = False
     return fb
 
 
@@ -176,6 +182,18 @@ def make_sbix_huge():
     fb.save(os.path.join(HERE, "sbix_huge.ttf"))
 
 
+def make_svg():
+    from fontTools.ttLib import newTable
+    from fontTools.ttLib.tables.S_V_G_ import SVGDocument
+    fb = base_font(["drawn"])
+    gid = fb.font.getGlyphID("drawn")
+    svg = newTable("SVG ")
+    svg.docList = [SVGDocument('<svg xmlns="http://www.w3.org/2000/svg"><rect id="glyph%d" x="100" y="-800" '
+                               'width="800" height="800" fill="red"/></svg>' % gid, gid, gid)]
+    fb.font["SVG "] = svg
+    fb.save(os.path.join(HERE, "svg.ttf"))
+
+
 def make_bad_palette():
     fb = base_font(["bad_solid", "bad_layer"])
     fb.font["CPAL"] = buildCPAL([[(1.0, 0.0, 0.0, 1.0), (0.0, 0.0, 1.0, 1.0)]])
@@ -193,4 +211,5 @@ if __name__ == "__main__":
     make_wide()
     make_stops()
     make_sbix_huge()
+    make_svg()
     make_bad_palette()
