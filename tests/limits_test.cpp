@@ -228,11 +228,13 @@ TEST(Limits, ImageWiderThankMaxImageDimIsAnError) {
 // StaysWithinItsBoundAcrossManySizes); kMaxTextCodePoints, a CLI limit (bad_inputs_cli_test);
 // kMaxSyntheticBold (synthetic_bold_test, RefusesBoldOutOfRangeAndEvenOddFill);
 // kMaxSystemFontLists (system_fonts_test, ListCacheStaysWithinkMaxSystemFontLists);
-// kMaxCollectionFonts (text_fallback_test, BadListsAreErrorsNamingTheFile).
+// kMaxCollectionFonts (text_fallback_test, BadListsAreErrorsNamingTheFile); kMaxPaintDepth,
+// kMaxPaintNodes and kMaxPaintColorStops (color_glyph_test, BadColr.*); kMaxColorBitmapBytes
+// (color_glyph_test, ImageLargerThankMaxColorBitmapBytesIsRefusedFromItsHeader).
 // Not crossed by a test, because reaching them is seconds of work under the sanitizers (the
 // fuzz targets run against them instead): kMaxSvgPathPoints and kMaxCubicsPerArc (8 Mi points
 // of arcs), kMaxPathIntersections (2^20 crossings), kMaxIntersectWork, kMaxPathSegmentPairs,
-// kMaxStrokeSegments.
+// kMaxStrokeSegments and kMaxPaintOutlinePoints (2^22 points of distinct glyphs' outlines).
 
 }  // namespace
 }  // namespace bezel
