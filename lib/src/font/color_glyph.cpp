@@ -288,6 +288,8 @@ Expected<ColorBitmap> load_color_bitmap(Font& font, GlyphId gid, double size_px)
         if (px >= size_px && (strike < 0 || px < face->available_sizes[strike].y_ppem / 64.0)) strike = i;
     }
     if (strike < 0) strike = largest;
+    if (!(face->available_sizes[strike].y_ppem > 0))
+        return Error{label + ": the font's bitmap strike " + std::to_string(strike) + " has no pixel size"};
 
     StrikeSizeScope scope(impl);
     if (!scope.ok()) return Error{label + ": cannot make a size object for the bitmap strikes"};
