@@ -36,7 +36,8 @@ double fixed(double v) { return std::round(v * 65536) / 65536; }
 template <typename T>
 const T& node(const ColorGlyph& g, PaintIndex i) {
     EXPECT_LT(i, g.nodes.size());
-    EXPECT_TRUE(std::holds_alternative<T>(g.nodes.at(i))) << "node " << i << " holds variant " << g.nodes.at(i).index();
+    EXPECT_TRUE(std::holds_alternative<T>(g.nodes.at(i)))
+        << "node " << i << " holds variant " << g.nodes.at(i).index();
     return std::get<T>(g.nodes.at(i));
 }
 
@@ -88,7 +89,7 @@ TEST(ColorFormat, EachGlyphReportsItsTable) {
     EXPECT_EQ(color_format(f, 100000), ColorFormat::None);
     Font noto = open_font(font_path("noto-color-emoji/NotoColorEmoji-subset.ttf"));
     EXPECT_EQ(color_format(noto, 1), ColorFormat::Bitmap);
-    EXPECT_EQ(color_format(noto, 0), ColorFormat::None);    // .notdef: an empty image
+    EXPECT_EQ(color_format(noto, 0), ColorFormat::None);   // .notdef: an empty image
     Font sbix = open_font(font_path("colour/twemoji_smiley-sbix.ttf"));
     EXPECT_EQ(color_format(sbix, 2), ColorFormat::Bitmap);
     EXPECT_STREQ(color_format_name(ColorFormat::ColrV1), "COLRv1");
@@ -168,7 +169,8 @@ TEST(ColrV1, RadialGradientHasBothCircles) {
 TEST(ColrV1, RotateIsTheSpecsCounterClockwiseMatrix) {
     Font f = test_glyphs();
     const double t = f2dot14(10.0 / 180) * kPi;   // rotate_10_center_0_0
-    expect_affine_near(composite_source_transform(f, 99), {std::cos(t), std::sin(t), -std::sin(t), std::cos(t), 0, 0});
+    expect_affine_near(composite_source_transform(f, 99),
+                       {std::cos(t), std::sin(t), -std::sin(t), std::cos(t), 0, 0});
     // rotate_25_center_500.0_500.0: T(c)·R·T(−c).
     const double u = f2dot14(25.0 / 180) * kPi, c = std::cos(u), s = std::sin(u);
     expect_affine_near(composite_source_transform(f, 101),
@@ -206,7 +208,8 @@ TEST(ColrV1, EveryCompositeModeIsReadInTheSpecsOrder) {
         const ColorGlyph g = load(f, static_cast<GlyphId>(120 + mode));
         const auto& layers = node<PaintLayers>(g, g.root);
         ASSERT_EQ(layers.layers.size(), 2u);
-        EXPECT_EQ(static_cast<int>(node<PaintComposite>(g, layers.layers[1]).mode), mode) << f.glyph_name(120 + mode);
+        EXPECT_EQ(static_cast<int>(node<PaintComposite>(g, layers.layers[1]).mode), mode)
+            << f.glyph_name(120 + mode);
     }
 }
 
@@ -226,7 +229,8 @@ TEST(ColrV1, PaintColrGlyphReachedFiveTimesIsOneSharedNodeAndOneOutline) {
     std::set<PaintIndex> colr_glyphs;
     std::size_t reached = 0;
     for (const PaintNode& n : g.nodes) {
-        if (const auto* t = std::get_if<PaintTransform>(&n); t && std::holds_alternative<PaintColrGlyph>(g.nodes.at(t->paint))) {
+        if (const auto* t = std::get_if<PaintTransform>(&n);
+            t && std::holds_alternative<PaintColrGlyph>(g.nodes.at(t->paint))) {
             colr_glyphs.insert(t->paint);
             ++reached;
         }
@@ -274,7 +278,8 @@ TEST(ColrV1, ChosenPaletteAndCustomEntriesColourTheStops) {
     const ColorGlyph g = load(f, 9, custom);
     const auto& lg = node<PaintLinearGradient>(g, node<PaintGlyph>(g, g.root).paint);
     EXPECT_EQ(lg.line.stops[0].color.color, rgb(0xFF, 0, 0));   // entry 0 unchanged
-    EXPECT_EQ(lg.line.stops[1].color.color, (ColorF{0x12 / 255.0f, 0x34 / 255.0f, 0x56 / 255.0f, 0x80 / 255.0f}));
+    EXPECT_EQ(lg.line.stops[1].color.color,
+              (ColorF{0x12 / 255.0f, 0x34 / 255.0f, 0x56 / 255.0f, 0x80 / 255.0f}));
 }
 
 TEST(ColrV1, PaletteOrEntryOutOfRangeIsAnErrorNamingIndexAndCount) {
@@ -283,14 +288,16 @@ TEST(ColrV1, PaletteOrEntryOutOfRangeIsAnErrorNamingIndexAndCount) {
     bad_palette.palette = 3;
     auto a = load_color_glyph(f, 9, bad_palette);
     ASSERT_FALSE(a.ok());
-    EXPECT_NE(a.error().message.find("palette 3 out of range (the font has 3 palettes)"), std::string::npos)
+    EXPECT_NE(a.error().message.find("palette 3 out of range (the font has 3 palettes)"),
+              std::string::npos)
         << a.error().message;
     ColorGlyphOptions bad_entry;
     bad_entry.custom.push_back({14, Rgba8{}});
     auto b = load_color_glyph(f, 9, bad_entry);
     ASSERT_FALSE(b.ok());
-    EXPECT_NE(b.error().message.find("custom palette entry 14 out of range (the palette has 14 entries)"),
-              std::string::npos)
+    EXPECT_NE(
+        b.error().message.find("custom palette entry 14 out of range (the palette has 14 entries)"),
+        std::string::npos)
         << b.error().message;
 }
 
@@ -314,7 +321,8 @@ TEST(ColrV1, VariablePaintsAreReadAtTheirDefaults) {
 }
 
 TEST(ColrV1, EveryTestGlyphBuildsExceptTheTwoThatLoop) {
-    for (const char* name : {"colour/test_glyphs-glyf_colr_1.ttf", "colour/test_glyphs-glyf_colr_1_variable.ttf"}) {
+    for (const char* name :
+         {"colour/test_glyphs-glyf_colr_1.ttf", "colour/test_glyphs-glyf_colr_1_variable.ttf"}) {
         Font f = open_font(font_path(name));
         int built = 0;
         for (GlyphId gid = 0; gid < f.glyph_count(); ++gid) {
@@ -369,7 +377,8 @@ TEST(ColrV0, LayersArePaintGlyphsOfSolidColours) {
     ColorGlyphOptions second;
     second.palette = 1;
     const ColorGlyph h = load(f, 3, second);
-    EXPECT_EQ(node<PaintSolid>(h, node<PaintGlyph>(h, node<PaintLayers>(h, h.root).layers[0]).paint).color.color,
+    EXPECT_EQ(node<PaintSolid>(h, node<PaintGlyph>(h, node<PaintLayers>(h, h.root).layers[0]).paint)
+                  .color.color,
               rgb(0, 0xFF, 0));
 }
 
@@ -378,8 +387,10 @@ TEST(ColrV0, TestFontsCirclesHaveEightLayersInPaletteOrder) {
     const ColorGlyph g = load(f, 168);   // colored_circles_v0
     const auto& layers = node<PaintLayers>(g, g.root);
     ASSERT_EQ(layers.layers.size(), 8u);
-    EXPECT_EQ(node<PaintSolid>(g, node<PaintGlyph>(g, layers.layers[0]).paint).color.color, rgb(0xFF, 0, 0));
-    EXPECT_EQ(node<PaintSolid>(g, node<PaintGlyph>(g, layers.layers[1]).paint).color.color, rgb(0xFF, 0xA5, 0));
+    EXPECT_EQ(node<PaintSolid>(g, node<PaintGlyph>(g, layers.layers[0]).paint).color.color,
+              rgb(0xFF, 0, 0));
+    EXPECT_EQ(node<PaintSolid>(g, node<PaintGlyph>(g, layers.layers[1]).paint).color.color,
+              rgb(0xFF, 0xA5, 0));
 }
 
 TEST(BadColr, PaintColrGlyphOfItselfIsAnErrorNamingTheGlyph) {
@@ -387,7 +398,8 @@ TEST(BadColr, PaintColrGlyphOfItselfIsAnErrorNamingTheGlyph) {
     for (GlyphId gid : {3u, 4u, 5u}) {   // self, ping, pong
         auto g = load_color_glyph(f, gid, {});
         ASSERT_FALSE(g.ok());
-        const std::string want = "glyph " + std::to_string(gid) + " (" + f.glyph_name(gid) + "): COLR paint graph loops";
+        const std::string want =
+            "glyph " + std::to_string(gid) + " (" + f.glyph_name(gid) + "): COLR paint graph loops";
         EXPECT_NE(g.error().message.find(want), std::string::npos) << g.error().message;
     }
 }
@@ -426,12 +438,14 @@ TEST(BadColr, PaletteIndexPastCpalIsAnErrorNamingIndexAndCount) {
     Font f = open_font(data_path("colr_bad_palette.ttf"));
     auto v1 = load_color_glyph(f, 3, {});   // bad_solid: PaintSolid index 7
     ASSERT_FALSE(v1.ok());
-    EXPECT_NE(v1.error().message.find("glyph 3 (bad_solid): palette index 7 out of range (the palette has 2 entries)"),
+    EXPECT_NE(v1.error().message.find(
+                  "glyph 3 (bad_solid): palette index 7 out of range (the palette has 2 entries)"),
               std::string::npos)
         << v1.error().message;
     auto v0 = load_color_glyph(f, 4, {});   // bad_layer: layer 1 index 9
     ASSERT_FALSE(v0.ok());
-    EXPECT_NE(v0.error().message.find("glyph 4 (bad_layer): COLR layer 1: palette index 9 out of range (the palette has 2 entries)"),
+    EXPECT_NE(v0.error().message.find("glyph 4 (bad_layer): COLR layer 1: palette index 9 out of range "
+                                      "(the palette has 2 entries)"),
               std::string::npos)
         << v0.error().message;
 }
@@ -440,7 +454,8 @@ TEST(BadColr, GlyphsWithoutColrDataAndIdsOutOfRangeAreErrors) {
     Font f = test_glyphs();
     auto none = load_color_glyph(f, 3, {});
     ASSERT_FALSE(none.ok());
-    EXPECT_NE(none.error().message.find("glyph 3 (cross_glyph): no COLR data for this glyph"), std::string::npos);
+    EXPECT_NE(none.error().message.find("glyph 3 (cross_glyph): no COLR data for this glyph"),
+              std::string::npos);
     auto far = load_color_glyph(f, 5000, {});
     ASSERT_FALSE(far.ok());
     EXPECT_NE(far.error().message.find("glyph id 5000 out of range"), std::string::npos);
@@ -531,7 +546,8 @@ TEST(ColorBitmap, BadRequestsAreErrorsNamingTheGlyph) {
     Font colr = test_glyphs();
     auto none = load_color_bitmap(colr, 9, 32);
     ASSERT_FALSE(none.ok());
-    EXPECT_NE(none.error().message.find("glyph 9 (linear_repeat_0.2_0.8): no colour bitmap"), std::string::npos)
+    EXPECT_NE(none.error().message.find("glyph 9 (linear_repeat_0.2_0.8): no colour bitmap"),
+              std::string::npos)
         << none.error().message;
 }
 

@@ -30,7 +30,8 @@ namespace {
 
 std::string scratch_file() {
     const char* dir = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : std::getenv("TMPDIR");
-    return std::string(dir ? dir : "/tmp") + "/bezel-fuzz-color-font-" + std::to_string(getpid()) + ".bin";
+    return std::string(dir ? dir : "/tmp") + "/bezel-fuzz-color-font-" + std::to_string(getpid()) +
+           ".bin";
 }
 
 bool write_file(const std::string& file, const std::uint8_t* data, std::size_t size) {
@@ -67,7 +68,9 @@ struct Walk {
     void visit(const bezel::PaintLayers& n, int depth) {
         for (bezel::PaintIndex c : n.layers) node(c, depth + 1);
     }
-    void visit(const bezel::PaintSolid& n, int) { BEZEL_FUZZ_CHECK(n.color.alpha >= 0 && n.color.alpha <= 1); }
+    void visit(const bezel::PaintSolid& n, int) {
+        BEZEL_FUZZ_CHECK(n.color.alpha >= 0 && n.color.alpha <= 1);
+    }
     void visit(const bezel::PaintLinearGradient& n, int) {
         check_line(n.line);
         BEZEL_FUZZ_CHECK(finite(n.p0) && finite(n.p1) && finite(n.p2));
@@ -131,7 +134,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     constexpr std::size_t kGlyphs = 48;
     const std::size_t step = std::max<std::size_t>(1, glyphs / kGlyphs);
     std::vector<bezel::GlyphId> gids;
-    for (std::size_t g = 0; g < glyphs && gids.size() < kGlyphs; g += step) gids.push_back(static_cast<bezel::GlyphId>(g));
+    for (std::size_t g = 0; g < glyphs && gids.size() < kGlyphs; g += step)
+        gids.push_back(static_cast<bezel::GlyphId>(g));
     gids.push_back(static_cast<bezel::GlyphId>(glyphs));   // one past the end: errors
 
     bezel::ColorGlyphOptions second;

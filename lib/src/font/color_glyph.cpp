@@ -48,7 +48,9 @@ std::vector<std::uint8_t> read_table(FT_Face face, FT_ULong tag, FT_Long offset,
 std::string glyph_name_label(const Font& font, GlyphId gid) {
     return "glyph " + std::to_string(gid) + " (" + font.glyph_name(gid) + ")";
 }
-std::string glyph_label(const Font& font, GlyphId gid) { return font.file() + ": " + glyph_name_label(font, gid); }
+std::string glyph_label(const Font& font, GlyphId gid) {
+    return font.file() + ": " + glyph_name_label(font, gid);
+}
 
 // The face's COLR table, read once; null when it has none or it is damaged (then `error` says so).
 const font_detail::ColrTable* colr_table(FontImpl& impl, std::string* error = nullptr) {
@@ -79,10 +81,12 @@ bool svg_has_glyph(FT_Face face, GlyphId gid) {
     const std::vector<std::uint8_t> count = read_table(face, kTagSvg, static_cast<FT_Long>(list), 2);
     if (count.size() != 2) return false;
     const std::uint32_t n = font_detail::read_u16(count, 0);
-    const std::vector<std::uint8_t> records = read_table(face, kTagSvg, static_cast<FT_Long>(list) + 2, 12 * n);
+    const std::vector<std::uint8_t> records =
+        read_table(face, kTagSvg, static_cast<FT_Long>(list) + 2, 12 * n);
     if (records.size() != 12u * n) return false;
     for (std::uint32_t i = 0; i < n; ++i) {
-        if (font_detail::read_u16(records, 12 * i) <= gid && gid <= font_detail::read_u16(records, 12 * i + 2))
+        if (font_detail::read_u16(records, 12 * i) <= gid &&
+            gid <= font_detail::read_u16(records, 12 * i + 2))
             return true;
     }
     return false;
@@ -92,7 +96,8 @@ bool svg_has_glyph(FT_Face face, GlyphId gid) {
 class StrikeSizeScope {
 public:
     explicit StrikeSizeScope(FontImpl& impl) : face_(impl.face.get()), saved_(face_->size) {
-        if (impl.strike_size == nullptr && FT_New_Size(face_, &impl.strike_size) != 0) impl.strike_size = nullptr;
+        if (impl.strike_size == nullptr && FT_New_Size(face_, &impl.strike_size) != 0)
+            impl.strike_size = nullptr;
         if (impl.strike_size != nullptr && FT_Activate_Size(impl.strike_size) == 0) active_ = true;
     }
     ~StrikeSizeScope() {
@@ -133,7 +138,8 @@ std::vector<std::uint32_t> cpal_palette_types(FT_Face face) {
     const std::vector<std::uint8_t> header = read_table(face, TTAG_CPAL, 0, 12);
     if (header.size() != 12 || font_detail::read_u16(header, 0) < 1) return {};
     const std::uint32_t n = font_detail::read_u16(header, 4);
-    const std::vector<std::uint8_t> offset = read_table(face, TTAG_CPAL, 12 + 2 * static_cast<FT_Long>(n), 4);
+    const std::vector<std::uint8_t> offset =
+        read_table(face, TTAG_CPAL, 12 + 2 * static_cast<FT_Long>(n), 4);
     if (offset.size() != 4 || font_detail::read_u32(offset, 0) == 0) return {};
     const std::vector<std::uint8_t> types =
         read_table(face, TTAG_CPAL, static_cast<FT_Long>(font_detail::read_u32(offset, 0)), 4 * n);
@@ -185,7 +191,8 @@ ColorFormat color_format(Font& font, GlyphId gid) {
         StrikeSizeScope scope(impl);
         if (scope.ok()) {
             for (int i = 0; i < face->num_fixed_sizes; ++i)
-                if (FT_Select_Size(face, i) == 0 && strike_has_image(face, gid)) return ColorFormat::Bitmap;
+                if (FT_Select_Size(face, i) == 0 && strike_has_image(face, gid))
+                    return ColorFormat::Bitmap;
         }
     }
     if (has_table(face, kTagSvg) && svg_has_glyph(face, gid)) return ColorFormat::Svg;
@@ -227,7 +234,8 @@ Expected<ColorGlyph> load_color_glyph(Font& font, GlyphId gid, const ColorGlyphO
         return Error{glyph_label(font, gid) + ": no COLR data (the font has no COLR table)"};
     }
     const bool v1 = colr->v1_root(gid).has_value();
-    if (!v1 && !colr->v0_layers(gid)) return Error{glyph_label(font, gid) + ": no COLR data for this glyph"};
+    if (!v1 && !colr->v0_layers(gid))
+        return Error{glyph_label(font, gid) + ": no COLR data for this glyph"};
 
     // The palette: CPAL's entries, custom ones applied. A font without CPAL has one empty palette
     // (only the foreground colour, index 0xFFFF, can be used).
@@ -238,11 +246,13 @@ Expected<ColorGlyph> load_color_glyph(Font& font, GlyphId gid, const ColorGlyphO
                      " out of range (the font has " + std::to_string(all.size()) + " palettes)"};
     font_detail::ColrContext context;
     if (!all.empty())
-        for (Rgba8 c : all[static_cast<std::size_t>(options.palette)].entries) context.palette.push_back(straight(c));
+        for (Rgba8 c : all[static_cast<std::size_t>(options.palette)].entries)
+            context.palette.push_back(straight(c));
     for (const ColorGlyphOptions::Entry& e : options.custom) {
         if (e.index < 0 || static_cast<std::size_t>(e.index) >= context.palette.size())
             return Error{glyph_label(font, gid) + ": custom palette entry " + std::to_string(e.index) +
-                         " out of range (the palette has " + std::to_string(context.palette.size()) + " entries)"};
+                         " out of range (the palette has " + std::to_string(context.palette.size()) +
+                         " entries)"};
         context.palette[static_cast<std::size_t>(e.index)] = straight(e.color);
     }
     context.glyph_count = font.glyph_count();
@@ -250,7 +260,8 @@ Expected<ColorGlyph> load_color_glyph(Font& font, GlyphId gid, const ColorGlyphO
     context.glyph_label = [&font](GlyphId g) { return glyph_name_label(font, g); };
     // Outlines in font units exactly as the font stores them (FT_LOAD_NO_SCALE), y up.
     context.load_outline = [face](GlyphId g) -> Expected<Path> {
-        if (FT_Error e = FT_Load_Glyph(face, g, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP))
+        if (FT_Error e =
+                FT_Load_Glyph(face, g, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP))
             return Error{ft_error_text(e)};
         if (face->glyph->format != FT_GLYPH_FORMAT_OUTLINE) return Error{"not an outline glyph"};
         std::vector<OutlinePoint> points;
@@ -272,22 +283,27 @@ Expected<ColorBitmap> load_color_bitmap(Font& font, GlyphId gid, double size_px)
     auto& impl = font_detail::Access::impl(font);
     const FT_Face face = impl.face.get();
     if (!(size_px > 0.0 && size_px <= kMaxFontSizePx))
-        return Error{font.file() + ": font size " + font_detail::format_number(size_px) + " px out of range (0, " +
-                     font_detail::format_number(kMaxFontSizePx) + "]"};
+        return Error{font.file() + ": font size " + font_detail::format_number(size_px) +
+                     " px out of range (0, " + font_detail::format_number(kMaxFontSizePx) + "]"};
     if (gid >= font.glyph_count())
         return Error{font.file() + ": glyph id " + std::to_string(gid) + " out of range (the font has " +
                      std::to_string(font.glyph_count()) + " glyphs)"};
     const std::string label = glyph_label(font, gid);
-    if (!has_bitmap_tables(face)) return Error{label + ": no colour bitmap (the font has no CBDT or sbix strikes)"};
+    if (!has_bitmap_tables(face))
+        return Error{label + ": no colour bitmap (the font has no CBDT or sbix strikes)"};
 
     // The smallest strike at least as large as the size, else the largest.
     int strike = -1, largest = 0;
     for (int i = 0; i < face->num_fixed_sizes; ++i) {
         const double px = face->available_sizes[i].y_ppem / 64.0;
         if (px > face->available_sizes[largest].y_ppem / 64.0) largest = i;
-        if (px >= size_px && (strike < 0 || px < face->available_sizes[strike].y_ppem / 64.0)) strike = i;
+        if (px >= size_px && (strike < 0 || px < face->available_sizes[strike].y_ppem / 64.0))
+            strike = i;
     }
     if (strike < 0) strike = largest;
+    if (!(face->available_sizes[strike].y_ppem > 0))
+        return Error{label + ": the font's bitmap strike " + std::to_string(strike) +
+                     " has no pixel size"};
 
     StrikeSizeScope scope(impl);
     if (!scope.ok()) return Error{label + ": cannot make a size object for the bitmap strikes"};
@@ -303,7 +319,8 @@ Expected<ColorBitmap> load_color_bitmap(Font& font, GlyphId gid, double size_px)
                      " is larger than " + std::to_string(kMaxColorBitmapBytes >> 20) + " MiB of RGBA"};
     };
     if (auto e = too_large(face->glyph->bitmap.width, face->glyph->bitmap.rows)) return *e;
-    if (FT_Error e = FT_Load_Glyph(face, gid, kStrikeLoad)) return Error{label + ": colour bitmap: " + ft_error_text(e)};
+    if (FT_Error e = FT_Load_Glyph(face, gid, kStrikeLoad))
+        return Error{label + ": colour bitmap: " + ft_error_text(e)};
     const FT_GlyphSlot slot = face->glyph;
     const FT_Bitmap& bm = slot->bitmap;
     if (auto e = too_large(bm.width, bm.rows)) return *e;
@@ -322,7 +339,8 @@ Expected<ColorBitmap> load_color_bitmap(Font& font, GlyphId gid, double size_px)
     out.advance_px = slot->advance.x / 64.0;
     FT_Fixed design_advance = 0;
     const int upem = font.metrics().units_per_em;
-    if (has_table(face, TTAG_sbix) && upem > 0 && FT_Get_Advance(face, gid, FT_LOAD_NO_SCALE, &design_advance) == 0)
+    if (has_table(face, TTAG_sbix) && upem > 0 &&
+        FT_Get_Advance(face, gid, FT_LOAD_NO_SCALE, &design_advance) == 0)
         out.advance_px = static_cast<double>(design_advance) * out.strike_px / upem;
     if (empty) {
         out.width = out.height = 0;
@@ -332,8 +350,9 @@ Expected<ColorBitmap> load_color_bitmap(Font& font, GlyphId gid, double size_px)
     // FreeType's BGRA is premultiplied, as bezel's RGBA: only the byte order changes. A negative
     // pitch means the buffer starts at the bottom row.
     for (unsigned y = 0; y < bm.rows; ++y) {
-        const std::uint8_t* src = bm.pitch >= 0 ? bm.buffer + std::ptrdiff_t{bm.pitch} * y
-                                                : bm.buffer + std::ptrdiff_t{-bm.pitch} * (bm.rows - 1 - y);
+        const std::uint8_t* src = bm.pitch >= 0
+                                      ? bm.buffer + std::ptrdiff_t{bm.pitch} * y
+                                      : bm.buffer + std::ptrdiff_t{-bm.pitch} * (bm.rows - 1 - y);
         std::uint8_t* dst = out.rgba.data() + std::size_t{y} * bm.width * 4;
         for (unsigned x = 0; x < bm.width; ++x) {
             dst[4 * x + 0] = src[4 * x + 2];

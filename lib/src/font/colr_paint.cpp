@@ -111,8 +111,9 @@ private:
             return c;
         }
         if (palette_index >= ctx_.palette.size())
-            return fail("palette index " + std::to_string(palette_index) + " out of range (the palette has " +
-                        std::to_string(ctx_.palette.size()) + " entries)");
+            return fail("palette index " + std::to_string(palette_index) +
+                        " out of range (the palette has " + std::to_string(ctx_.palette.size()) +
+                        " entries)");
         c.color = ctx_.palette[palette_index];
         return c;
     }
@@ -127,10 +128,12 @@ private:
         line.extend = extend == 1 ? Extend::Repeat : extend == 2 ? Extend::Reflect : Extend::Pad;
         const std::uint32_t count = read_u16(b_, o + 1);
         const std::size_t stride = var ? 10 : 6;   // ColorStop, VarColorStop (+ varIndexBase)
-        if (!fits(b_, o + 3, std::uint64_t{stride} * count)) return damaged("colour stops past the end", offset);
+        if (!fits(b_, o + 3, std::uint64_t{stride} * count))
+            return damaged("colour stops past the end", offset);
         stops_ += count;
         if (stops_ > kMaxPaintColorStops)
-            return fail("COLR gradients hold more than " + std::to_string(kMaxPaintColorStops) + " colour stops");
+            return fail("COLR gradients hold more than " + std::to_string(kMaxPaintColorStops) +
+                        " colour stops");
         line.stops.reserve(count);
         for (std::uint32_t i = 0; i < count; ++i) {
             const std::size_t s = o + 3 + i * stride;
@@ -145,14 +148,15 @@ private:
 
     Expected<std::uint32_t> outline(GlyphId gid) {
         if (gid >= ctx_.glyph_count)
-            return fail("PaintGlyph names glyph " + std::to_string(gid) + ", out of range (the font has " +
-                        std::to_string(ctx_.glyph_count) + " glyphs)");
+            return fail("PaintGlyph names glyph " + std::to_string(gid) +
+                        ", out of range (the font has " + std::to_string(ctx_.glyph_count) + " glyphs)");
         if (auto it = outline_.find(gid); it != outline_.end()) return it->second;
         Expected<Path> path = ctx_.load_outline(gid);
         if (!path) return fail("outline of " + ctx_.glyph_label(gid) + ": " + path.error().message);
         outline_points_ += path->points().size();
         if (outline_points_ > kMaxPaintOutlinePoints)
-            return fail("COLR outlines hold more than " + std::to_string(kMaxPaintOutlinePoints) + " points");
+            return fail("COLR outlines hold more than " + std::to_string(kMaxPaintOutlinePoints) +
+                        " points");
         const auto index = static_cast<std::uint32_t>(out_.outlines.size());
         out_.outlines.push_back(std::move(*path));
         outline_.emplace(gid, index);
@@ -180,11 +184,13 @@ private:
                 return fail("COLR paint graph nests deeper than " + std::to_string(kMaxPaintDepth));
             visits_ += cost_[node] - 1;   // paint() counted this node already
             if (visits_ > kMaxPaintNodes)
-                return fail("COLR paint graph visits more than " + std::to_string(kMaxPaintNodes) + " nodes");
+                return fail("COLR paint graph visits more than " + std::to_string(kMaxPaintNodes) +
+                            " nodes");
             return node;
         }
         if (std::find(active_.begin(), active_.end(), gid) != active_.end())
-            return fail("COLR paint graph loops: PaintColrGlyph of " + ctx_.glyph_label(gid) + " inside itself");
+            return fail("COLR paint graph loops: PaintColrGlyph of " + ctx_.glyph_label(gid) +
+                        " inside itself");
         const std::optional<std::uint32_t> root = t_.v1_root(gid);
         // A glyph the BaseGlyphList does not have paints nothing (the spec's rule).
         if (!root) return add(PaintLayers{}, 1, 1);
@@ -203,16 +209,19 @@ private:
         if (depth > kMaxPaintDepth)
             return fail("COLR paint graph nests deeper than " + std::to_string(kMaxPaintDepth));
         if (++visits_ > kMaxPaintNodes)
-            return fail("COLR paint graph visits more than " + std::to_string(kMaxPaintNodes) + " nodes");
+            return fail("COLR paint graph visits more than " + std::to_string(kMaxPaintNodes) +
+                        " nodes");
         if (!fits(b_, offset, 1)) return damaged("paint past the end", offset);
         const auto o = static_cast<std::size_t>(offset);
         const std::uint32_t format = read_u8(b_, o);
-        if (format == 0 || format > 32) return damaged("unknown paint format " + std::to_string(format), o);
+        if (format == 0 || format > 32)
+            return damaged("unknown paint format " + std::to_string(format), o);
         if (!fits(b_, o, kPaintSize[format])) return damaged("paint past the end", o);
         const bool var = format % 2 == 1 && format >= 3 && format <= 31;
 
         switch (format) {
-            case 1: {   // PaintColrLayers: numLayers (uint8), firstLayerIndex (uint32) into the LayerList
+            case 1: {   // PaintColrLayers: numLayers (uint8), firstLayerIndex (uint32) into the
+                        // LayerList
                 const std::uint32_t count = read_u8(b_, o + 1), first = read_u32(b_, o + 2);
                 if (std::uint64_t{first} + count > t_.num_layers_v1())
                     return damaged("PaintColrLayers past the LayerList", o);
@@ -221,7 +230,8 @@ private:
                 int height = 1;
                 for (std::uint32_t i = 0; i < count; ++i) {
                     const std::size_t entry = t_.layer_list() + 4 + std::size_t{first + i} * 4;
-                    Expected<PaintIndex> c = paint(std::uint64_t{t_.layer_list()} + read_u32(b_, entry), depth + 1);
+                    Expected<PaintIndex> c =
+                        paint(std::uint64_t{t_.layer_list()} + read_u32(b_, entry), depth + 1);
                     if (!c) return c;
                     layers.layers.push_back(*c);
                     cost += cost_[*c];
@@ -247,11 +257,17 @@ private:
                 if (line->stops.empty()) return add(PaintLayers{}, 1, 1);
                 auto s = [&](std::size_t at) { return double(read_s16(b_, o + at)); };
                 if (format <= 5) {
-                    return add(PaintLinearGradient{std::move(*line), {s(4), s(6)}, {s(8), s(10)}, {s(12), s(14)}}, 1, 1);
+                    return add(
+                        PaintLinearGradient{
+                            std::move(*line), {s(4), s(6)}, {s(8), s(10)}, {s(12), s(14)}},
+                        1, 1);
                 }
                 if (format <= 7) {
-                    PaintRadialGradient g{std::move(*line), {s(4), s(6)}, {s(10), s(12)},
-                                          double(read_u16(b_, o + 8)), double(read_u16(b_, o + 14))};
+                    PaintRadialGradient g{std::move(*line),
+                                          {s(4), s(6)},
+                                          {s(10), s(12)},
+                                          double(read_u16(b_, o + 8)),
+                                          double(read_u16(b_, o + 14))};
                     return add(std::move(g), 1, 1);
                 }
                 // Sweep angles are stored biased: degrees = (F2Dot14 + 1) · 180, so that 360° fits.
@@ -269,7 +285,8 @@ private:
             case 11:   // PaintColrGlyph: glyphID
                 return colr_glyph(read_u16(b_, o + 1), depth);
             case 12:
-            case 13: {   // PaintTransform: Offset24 paint, Offset24 (Var)Affine2x3 of Fixed xx yx xy yy dx dy
+            case 13: {   // PaintTransform: Offset24 paint, Offset24 (Var)Affine2x3 of Fixed xx yx xy yy
+                         // dx dy
                 const std::uint64_t m = std::uint64_t{o} + read_u24(b_, o + 4);
                 if (!fits(b_, m, var ? 28 : 24)) return damaged("Affine2x3 past the end", o);
                 const auto a = static_cast<std::size_t>(m);
@@ -278,15 +295,18 @@ private:
             }
             case 14:
             case 15:   // PaintTranslate: dx, dy (FWORD)
-                return transform(Affine::translate({double(read_s16(b_, o + 4)), double(read_s16(b_, o + 6))}), o,
-                                 depth);
+                return transform(
+                    Affine::translate({double(read_s16(b_, o + 4)), double(read_s16(b_, o + 6))}), o,
+                    depth);
             case 16:
             case 17:
             case 18:
             case 19: {   // PaintScale[AroundCenter]: scaleX, scaleY (F2Dot14)[, centerX, centerY]
-                const Affine m = Affine::scale(f2dot14(read_s16(b_, o + 4)), f2dot14(read_s16(b_, o + 6)));
+                const Affine m =
+                    Affine::scale(f2dot14(read_s16(b_, o + 4)), f2dot14(read_s16(b_, o + 6)));
                 if (format <= 17) return transform(m, o, depth);
-                return transform(around(m, {double(read_s16(b_, o + 8)), double(read_s16(b_, o + 10))}), o, depth);
+                return transform(around(m, {double(read_s16(b_, o + 8)), double(read_s16(b_, o + 10))}),
+                                 o, depth);
             }
             case 20:
             case 21:
@@ -294,7 +314,8 @@ private:
             case 23: {   // PaintScaleUniform[AroundCenter]: scale[, centerX, centerY]
                 const Affine m = Affine::scale(f2dot14(read_s16(b_, o + 4)));
                 if (format <= 21) return transform(m, o, depth);
-                return transform(around(m, {double(read_s16(b_, o + 6)), double(read_s16(b_, o + 8))}), o, depth);
+                return transform(around(m, {double(read_s16(b_, o + 6)), double(read_s16(b_, o + 8))}),
+                                 o, depth);
             }
             case 24:
             case 25:
@@ -302,7 +323,8 @@ private:
             case 27: {   // PaintRotate[AroundCenter]: angle[, centerX, centerY]
                 const Affine m = rotation(f2dot14(read_s16(b_, o + 4)));
                 if (format <= 25) return transform(m, o, depth);
-                return transform(around(m, {double(read_s16(b_, o + 6)), double(read_s16(b_, o + 8))}), o, depth);
+                return transform(around(m, {double(read_s16(b_, o + 6)), double(read_s16(b_, o + 8))}),
+                                 o, depth);
             }
             case 28:
             case 29:
@@ -310,7 +332,8 @@ private:
             case 31: {   // PaintSkew[AroundCenter]: xSkewAngle, ySkewAngle[, centerX, centerY]
                 const Affine m = skew(f2dot14(read_s16(b_, o + 4)), f2dot14(read_s16(b_, o + 6)));
                 if (format <= 29) return transform(m, o, depth);
-                return transform(around(m, {double(read_s16(b_, o + 8)), double(read_s16(b_, o + 10))}), o, depth);
+                return transform(around(m, {double(read_s16(b_, o + 8)), double(read_s16(b_, o + 10))}),
+                                 o, depth);
             }
             case 32: {   // PaintComposite: Offset24 source, compositeMode (uint8), Offset24 backdrop
                 const std::uint32_t mode = read_u8(b_, o + 4);
@@ -324,8 +347,7 @@ private:
                            1 + cost_[*source] + cost_[*backdrop],
                            1 + std::max(height_[*source], height_[*backdrop]));
             }
-            default:
-                return damaged("unknown paint format " + std::to_string(format), o);
+            default: return damaged("unknown paint format " + std::to_string(format), o);
         }
     }
 };
@@ -334,7 +356,8 @@ private:
 
 Expected<ColorGlyph> build_colr_v1(const ColrTable& table, GlyphId gid, const ColrContext& context) {
     const std::optional<std::uint32_t> root = table.v1_root(gid);
-    if (!root) return Error{context.file + ": " + context.glyph_label(gid) + ": no COLR version 1 paint"};
+    if (!root)
+        return Error{context.file + ": " + context.glyph_label(gid) + ": no COLR version 1 paint"};
     return GraphBuilder(table, context, gid).build(*root);
 }
 

@@ -30,7 +30,8 @@ Expected<ColrTable> ColrTable::parse(std::vector<std::uint8_t> bytes) {
     ColrTable t;
     t.bytes_ = std::move(bytes);
     const auto& b = t.bytes_;
-    if (!fits(b, 0, kHeaderV0)) return Error{"COLR table too short (" + std::to_string(b.size()) + " bytes)"};
+    if (!fits(b, 0, kHeaderV0))
+        return Error{"COLR table too short (" + std::to_string(b.size()) + " bytes)"};
     t.version_ = static_cast<int>(read_u16(b, 0));
     if (t.version_ > 1) return Error{"COLR version " + std::to_string(t.version_) + " not supported"};
     t.num_base_v0_ = read_u16(b, 2);
@@ -50,7 +51,8 @@ Expected<ColrTable> ColrTable::parse(std::vector<std::uint8_t> bytes) {
         if (!fits(b, base_list, 4)) return Error{past_end("BaseGlyphList")};
         t.base_v1_ = base_list;
         t.num_base_v1_ = read_u32(b, base_list);
-        if (!fits(b, std::uint64_t{base_list} + 4, std::uint64_t{kBaseGlyphPaintRecord} * t.num_base_v1_))
+        if (!fits(b, std::uint64_t{base_list} + 4,
+                  std::uint64_t{kBaseGlyphPaintRecord} * t.num_base_v1_))
             return Error{past_end("BaseGlyphList")};
     }
     if (layer_list != 0) {
@@ -134,8 +136,9 @@ Expected<std::optional<Rect>> ColrTable::clip_box(GlyphId gid) const {
             const std::uint32_t format = read_u8(bytes_, box);
             if (format != 1 && format != 2) return std::optional<Rect>{};
             const std::size_t p = static_cast<std::size_t>(box);
-            return std::optional<Rect>{Rect{double(read_s16(bytes_, p + 1)), double(read_s16(bytes_, p + 3)),
-                                            double(read_s16(bytes_, p + 5)), double(read_s16(bytes_, p + 7))}};
+            return std::optional<Rect>{
+                Rect{double(read_s16(bytes_, p + 1)), double(read_s16(bytes_, p + 3)),
+                     double(read_s16(bytes_, p + 5)), double(read_s16(bytes_, p + 7))}};
         }
     }
     return std::optional<Rect>{};
@@ -146,30 +149,32 @@ Expected<ColorGlyph> build_colr_v0(const ColrTable& table, GlyphId gid, const Co
     if (!layers) return Error{context.file + ": " + context.glyph_label(gid) + ": no COLR layers"};
     // Two nodes per layer and the root: bounded like a version 1 graph.
     if (2 * std::size_t{layers->count} + 1 > kMaxPaintNodes)
-        return Error{context.file + ": " + context.glyph_label(gid) + ": COLR paint graph visits more than " +
-                     std::to_string(kMaxPaintNodes) + " nodes"};
+        return Error{context.file + ": " + context.glyph_label(gid) +
+                     ": COLR paint graph visits more than " + std::to_string(kMaxPaintNodes) + " nodes"};
     ColorGlyph out;
     PaintLayers root;
-    std::unordered_map<GlyphId, std::uint32_t> outline_of;       // glyph → index in out.outlines
-    std::size_t points = 0;                                      // against kMaxPaintOutlinePoints
+    std::unordered_map<GlyphId, std::uint32_t> outline_of;   // glyph → index in out.outlines
+    std::size_t points = 0;                                  // against kMaxPaintOutlinePoints
     for (std::uint32_t i = 0; i < layers->count; ++i) {
         const std::uint32_t index = layers->first + i;
         const std::optional<ColrTable::V0Layer> layer = table.v0_layer(index);
         if (!layer)
-            return Error{context.file + ": " + context.glyph_label(gid) + ": COLR layer record " + std::to_string(index) +
-                         " past the end of the table"};
+            return Error{context.file + ": " + context.glyph_label(gid) + ": COLR layer record " +
+                         std::to_string(index) + " past the end of the table"};
         if (layer->glyph >= context.glyph_count)
-            return Error{context.file + ": " + context.glyph_label(gid) + ": COLR layer " + std::to_string(i) + " names glyph " +
-                         std::to_string(layer->glyph) + ", out of range (the font has " +
-                         std::to_string(context.glyph_count) + " glyphs)"};
+            return Error{context.file + ": " + context.glyph_label(gid) + ": COLR layer " +
+                         std::to_string(i) + " names glyph " + std::to_string(layer->glyph) +
+                         ", out of range (the font has " + std::to_string(context.glyph_count) +
+                         " glyphs)"};
         PaintColor color;
         if (layer->palette_index == 0xFFFF) {
             color.foreground = true;
             out.uses_foreground = true;
         } else if (layer->palette_index >= context.palette.size()) {
-            return Error{context.file + ": " + context.glyph_label(gid) + ": COLR layer " + std::to_string(i) + ": palette index " +
-                         std::to_string(layer->palette_index) + " out of range (the palette has " +
-                         std::to_string(context.palette.size()) + " entries)"};
+            return Error{context.file + ": " + context.glyph_label(gid) + ": COLR layer " +
+                         std::to_string(i) + ": palette index " + std::to_string(layer->palette_index) +
+                         " out of range (the palette has " + std::to_string(context.palette.size()) +
+                         " entries)"};
         } else {
             color.color = context.palette[layer->palette_index];
         }
@@ -183,8 +188,9 @@ Expected<ColorGlyph> build_colr_v0(const ColrTable& table, GlyphId gid, const Co
                              context.glyph_label(layer->glyph) + ": " + path.error().message};
             points += path->points().size();
             if (points > kMaxPaintOutlinePoints)
-                return Error{context.file + ": " + context.glyph_label(gid) + ": COLR outlines hold more than " +
-                             std::to_string(kMaxPaintOutlinePoints) + " points"};
+                return Error{context.file + ": " + context.glyph_label(gid) +
+                             ": COLR outlines hold more than " + std::to_string(kMaxPaintOutlinePoints) +
+                             " points"};
             outline = static_cast<std::uint32_t>(out.outlines.size());
             out.outlines.push_back(std::move(*path));
             outline_of.emplace(layer->glyph, outline);

@@ -90,9 +90,9 @@ struct ColrContext {
 // The version 1 paint graph of `gid` (precondition: table.v1_root(gid)), walked depth first with
 // kMaxPaintDepth and kMaxPaintNodes (a node reached twice counts twice, as the painter visits it).
 // PaintColrGlyph of one glyph id is built once and shared; each PaintGlyph outline is loaded once
-// per glyph id. Errors start with the file and glyph_label(gid) and say what: the graph loops (a PaintColrGlyph
-// inside itself), nests deeper than kMaxPaintDepth, visits more than kMaxPaintNodes, holds more
-// than kMaxPaintColorStops colour stops or kMaxPaintOutlinePoints outline points, a palette
+// per glyph id. Errors start with the file and glyph_label(gid) and say what: the graph loops (a
+// PaintColrGlyph inside itself), nests deeper than kMaxPaintDepth, visits more than kMaxPaintNodes,
+// holds more than kMaxPaintColorStops colour stops or kMaxPaintOutlinePoints outline points, a palette
 // index out of range (index and count), a glyph id out of range, an unknown paint format or
 // composite mode, an offset past the end of the table, an outline that does not load.
 Expected<ColorGlyph> build_colr_v1(const ColrTable& table, GlyphId gid, const ColrContext& context);
