@@ -5,7 +5,9 @@
 // Properties: no crash, hang or sanitizer report; every error names the font file; every
 // ColorGlyph holds paint.hpp's invariants (indices in range, no cycle, at most kMaxPaintDepth deep
 // and kMaxPaintNodes visited, stops sorted and non-empty, finite outlines and geometry); every
-// ColorBitmap is premultiplied RGBA of its stated size.
+// ColorBitmap is premultiplied RGBA of its stated size. Each glyph is then drawn end to end at
+// 24 px through GlyphRasterizer (the box, the painter or the bitmap scaling): an error names the
+// glyph, and drawn pixels are premultiplied.
 //
 // Seeds (corpus/fuzz_color_font): fonts-test/colour's small COLRv1 and sbix fonts and
 // fonts-test/noto-color-emoji's CBDT subset (Apache-2.0 and OFL, see their folders), and the COLR
@@ -23,6 +25,7 @@
 #include <vector>
 
 #include "bezel/color_glyph.hpp"
+#include "bezel/glyph.hpp"
 #include "bezel/limits.hpp"
 #include "fuzz_reader.hpp"
 
@@ -138,6 +141,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         gids.push_back(static_cast<bezel::GlyphId>(g));
     gids.push_back(static_cast<bezel::GlyphId>(glyphs));   // one past the end: errors
 
+    bezel::GlyphRasterizer rasterizer(font);
+    bezel::GlyphRenderOptions drawn_at;
+    drawn_at.size_px = 24;
+    std::vector<std::uint8_t> pixels;
     bezel::ColorGlyphOptions second;
     second.palette = 1;
     second.custom.push_back({0, bezel::Rgba8{1, 2, 3, 4}});
@@ -153,6 +160,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 BEZEL_FUZZ_CHECK(g.error().message.find(file) != std::string::npos);
             }
             if (palettes.size() < 2) break;   // palette 1 would be an error: the default is enough
+        }
+        if (auto prepared = rasterizer.prepare(gid, drawn_at)) {
+            const bezel::GlyphBox& box = prepared->box;
+            // A mutated font may box a glyph up to kMaxBitmapDim a side; 512 × 512 is plenty here.
+            if (box.color && box.width <= 512 && box.height <= 512) {
+                pixels.assign(4 * std::size_t(box.width) * std::size_t(box.height), 0);
+                const bezel::RgbaView view{pixels.data(), box.width, box.height, 4 * box.width};
+                if (rasterizer.draw_rgba(*prepared, view)) {
+                    for (std::size_t i = 0; i < pixels.size(); i += 4)
+                        BEZEL_FUZZ_CHECK(pixels[i] <= pixels[i + 3] &&
+                                         pixels[i + 1] <= pixels[i + 3] &&
+                                         pixels[i + 2] <= pixels[i + 3]);
+                }
+            }
+        } else {
+            BEZEL_FUZZ_CHECK(prepared.error().message.find("glyph") != std::string::npos);
         }
         if (format == bezel::ColorFormat::Bitmap || gid < 4) {
             for (double size : {16.0, 300.0}) {
