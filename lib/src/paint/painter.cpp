@@ -192,7 +192,8 @@ struct Painter::Impl {
             fo.origin = {-static_cast<double>(box.x0), -static_cast<double>(box.y0)};
             const FloatMaskView view{m + at(box.x0, box.y0), box.x1 - box.x0, box.y1 - box.y0, w};
             Status s = raster.fill_path(outline, ctm, view, fo);
-            if (!s) return fail(s.error());
+            if (!s)
+                return fail(Error{"outline " + std::to_string(n->outline) + ": " + s.error().message});
             intersect_with(m, box, clip);
             Clip inner = box;
             inner.mask = m;
