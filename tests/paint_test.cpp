@@ -432,6 +432,30 @@ TEST(Paint, GlyphClipIsTheRasterizersCoverageTimesTheColour) {
     EXPECT_GT(partial, 20);
 }
 
+// Regression: test_glyphs-glyf_colr_1.ttf's solid_colorline_alpha (U+F1000) showed a light
+// cross through its circles at 96 px. circle_r350 is four pie slices, two wound each way, meeting
+// on lines through the centre; where those lines cross a pixel, plain signed-area accumulation
+// gave |a − (1 − a)| instead of 1.
+TEST(Paint, AbuttingContoursOfOppositeWindingLeaveNoSeam) {
+    Path pie;
+    const Point c{33.6, 38.4};
+    const Point corner[4] = {{10, 10}, {60, 10}, {60, 70}, {10, 70}};
+    for (int i = 0; i < 4; ++i) {
+        // Slices 0 and 2 run c → corner i → corner i+1, slices 1 and 3 the other way round.
+        const Point a = corner[i], b = corner[(i + 1) % 4];
+        pie.move_to(c);
+        pie.line_to(i % 2 ? b : a);
+        pie.line_to(i % 2 ? a : b);
+        pie.close();
+    }
+    ColorGlyph g;
+    g.outlines = {pie};
+    g.nodes = {PaintGlyph{0, 1}, PaintSolid{color(0, 0, 1)}};
+    const Target t = paint(g, 80, 80, Affine::identity());
+    for (int x = 12; x < 58; ++x) expect_pixel(t, x, 38, {0, 0, 1, 1}, 0, "row through the centre");
+    for (int y = 12; y < 68; ++y) expect_pixel(t, 33, y, {0, 0, 1, 1}, 0, "column through the centre");
+}
+
 TEST(Paint, NestedClipsMultiplyAndARotatedClipBoxIsAPolygon) {
     const int w = 32, h = 32;
     ColorGlyph g;
@@ -774,6 +798,7 @@ TEST(Paint, SecondPaintAllocatesNothing) {
     Path circle, sq;
     test::add_circle(circle, {20, 20}, 15);
     test::add_rect(sq, 5, 5, 30, 25);
+    test::add_circle(sq, {30, 25}, 6);   // two contours: the accurate-overlap fill's scratch too
     g.outlines = {circle, sq};
     const ColorLine l = line(Extend::Reflect, {{0.0f, kRed}, {0.3f, kGreen}, {1.0f, kBlue}});
     g.nodes = {PaintLayers{{1, 4}},
