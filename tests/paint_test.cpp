@@ -296,6 +296,13 @@ TEST(Paint, HardStopsAndStopsOutsideTheUnitSpan) {
     const Target t = paint(single(PaintLinearGradient{hard, {0, 0}, {40, 0}, {0, 10}}), w, h, flip(h));
     expect_pixel(t, 19, 0, premul(kRed), 0, "below the hard stop");
     expect_pixel(t, 20, 0, premul(kBlue), 0, "above the hard stop");
+    // Every stop at 0.5: Pad splits there; Repeat and Reflect have no span and paint nothing.
+    for (Extend e : {Extend::Pad, Extend::Repeat, Extend::Reflect}) {
+        const ColorLine one = line(e, {{0.5f, kRed}, {0.5f, kBlue}});
+        const Target z = paint(single(PaintLinearGradient{one, {0, 0}, {40, 0}, {0, 10}}), w, h, flip(h));
+        expect_pixel(z, 5, 0, e == Extend::Pad ? premul(kRed) : P{0, 0, 0, 0}, 0, "coincident stops");
+        expect_pixel(z, 30, 0, e == Extend::Pad ? premul(kBlue) : P{0, 0, 0, 0}, 0, "coincident stops");
+    }
     // Stops at −1 and 2: t = 0.5 is halfway.
     const ColorLine wide = line(Extend::Pad, {{-1.0f, kRed}, {2.0f, kBlue}});
     const Target u = paint(single(PaintLinearGradient{wide, {0, 0}, {40, 0}, {0, 10}}), w, h, flip(h));
