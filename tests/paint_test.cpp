@@ -296,6 +296,13 @@ TEST(Paint, HardStopsAndStopsOutsideTheUnitSpan) {
     const Target t = paint(single(PaintLinearGradient{hard, {0, 0}, {40, 0}, {0, 10}}), w, h, flip(h));
     expect_pixel(t, 19, 0, premul(kRed), 0, "below the hard stop");
     expect_pixel(t, 20, 0, premul(kBlue), 0, "above the hard stop");
+    // Every stop at 0.5: Pad splits there; Repeat and Reflect have no span and paint nothing.
+    for (Extend e : {Extend::Pad, Extend::Repeat, Extend::Reflect}) {
+        const ColorLine one = line(e, {{0.5f, kRed}, {0.5f, kBlue}});
+        const Target z = paint(single(PaintLinearGradient{one, {0, 0}, {40, 0}, {0, 10}}), w, h, flip(h));
+        expect_pixel(z, 5, 0, e == Extend::Pad ? premul(kRed) : P{0, 0, 0, 0}, 0, "coincident stops");
+        expect_pixel(z, 30, 0, e == Extend::Pad ? premul(kBlue) : P{0, 0, 0, 0}, 0, "coincident stops");
+    }
     // Stops at −1 and 2: t = 0.5 is halfway.
     const ColorLine wide = line(Extend::Pad, {{-1.0f, kRed}, {2.0f, kBlue}});
     const Target u = paint(single(PaintLinearGradient{wide, {0, 0}, {40, 0}, {0, 10}}), w, h, flip(h));
@@ -430,6 +437,30 @@ TEST(Paint, GlyphClipIsTheRasterizersCoverageTimesTheColour) {
             expect_pixel(t, x, y, {p.r * k, p.g * k, p.b * k, p.a * k}, 1, "glyph clip");
         }
     EXPECT_GT(partial, 20);
+}
+
+// Regression: test_glyphs-glyf_colr_1.ttf's solid_colorline_alpha (U+F1000) showed a light
+// cross through its circles at 96 px. circle_r350 is four pie slices, two wound each way, meeting
+// on lines through the centre; where those lines cross a pixel, plain signed-area accumulation
+// gave |a − (1 − a)| instead of 1.
+TEST(Paint, AbuttingContoursOfOppositeWindingLeaveNoSeam) {
+    Path pie;
+    const Point c{33.6, 38.4};
+    const Point corner[4] = {{10, 10}, {60, 10}, {60, 70}, {10, 70}};
+    for (int i = 0; i < 4; ++i) {
+        // Slices 0 and 2 run c → corner i → corner i+1, slices 1 and 3 the other way round.
+        const Point a = corner[i], b = corner[(i + 1) % 4];
+        pie.move_to(c);
+        pie.line_to(i % 2 ? b : a);
+        pie.line_to(i % 2 ? a : b);
+        pie.close();
+    }
+    ColorGlyph g;
+    g.outlines = {pie};
+    g.nodes = {PaintGlyph{0, 1}, PaintSolid{color(0, 0, 1)}};
+    const Target t = paint(g, 80, 80, Affine::identity());
+    for (int x = 12; x < 58; ++x) expect_pixel(t, x, 38, {0, 0, 1, 1}, 0, "row through the centre");
+    for (int y = 12; y < 68; ++y) expect_pixel(t, 33, y, {0, 0, 1, 1}, 0, "column through the centre");
 }
 
 TEST(Paint, NestedClipsMultiplyAndARotatedClipBoxIsAPolygon) {
@@ -774,6 +805,7 @@ TEST(Paint, SecondPaintAllocatesNothing) {
     Path circle, sq;
     test::add_circle(circle, {20, 20}, 15);
     test::add_rect(sq, 5, 5, 30, 25);
+    test::add_circle(sq, {30, 25}, 6);   // two contours: the accurate-overlap fill's scratch too
     g.outlines = {circle, sq};
     const ColorLine l = line(Extend::Reflect, {{0.0f, kRed}, {0.3f, kGreen}, {1.0f, kBlue}});
     g.nodes = {PaintLayers{{1, 4}},

@@ -91,6 +91,8 @@ struct ColorStop {
     PaintColor color;
 };
 // Stops sorted by offset (stable: equal offsets keep their order, a hard edge). At least one stop.
+// When every stop has the same offset, Pad is a hard edge there and Repeat or Reflect paints
+// nothing (there is no span to repeat; Chromium draws nothing too).
 struct ColorLine {
     Extend extend = Extend::Pad;
     std::vector<ColorStop> stops;

@@ -22,7 +22,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 // t folded onto [first, last] by the extend mode: Repeat takes t modulo the span, Reflect
-// mirrors every other span. A span of zero length (all stops at one offset) pads.
+// mirrors every other span. (A span of zero length only reaches here padded: see
+// repeats_nothing.)
 double extend(const ColorLine& line, double t) {
     const double first = line.stops.front().offset, last = line.stops.back().offset;
     const double span = last - first;
@@ -36,6 +37,13 @@ double extend(const ColorLine& line, double t) {
         if (m > 1.0) m = 2.0 - m;
     }
     return first + m * span;
+}
+
+// All stops at one offset leave Repeat and Reflect nothing to repeat: such a gradient paints
+// nothing, as Chromium draws test_glyphs' sweep_coincident_stops_*_repeat / _reflect (U+F130D,
+// U+F130E, ...). Padded, it is a hard edge at that offset.
+bool repeats_nothing(const ColorLine& line) {
+    return line.extend != Extend::Pad && !(line.stops.back().offset > line.stops.front().offset);
 }
 
 }  // namespace
@@ -67,7 +75,7 @@ Gradient::Gradient(const PaintLinearGradient& g) : kind_(Kind::Linear), line_(&g
     const Vec2 d1 = g.p1 - g.p0, d2 = g.p2 - g.p0;
     const Vec2 n = d2.perp();
     p0_ = g.p0;
-    if (d1.cross(d2) == 0.0 || n.length_squared() == 0.0) {
+    if (d1.cross(d2) == 0.0 || n.length_squared() == 0.0 || repeats_nothing(g.line)) {
         paints_ = false;
         return;
     }
@@ -93,7 +101,7 @@ Gradient::Gradient(const PaintRadialGradient& g) : kind_(Kind::Radial), line_(&g
     dr_ = g.r1 - g.r0;
     a_ = cd_.length_squared() - dr_ * dr_;
     // Equal circles: no t is defined (canvas paints nothing).
-    if (cd_.length_squared() == 0.0 && dr_ == 0.0) paints_ = false;
+    if ((cd_.length_squared() == 0.0 && dr_ == 0.0) || repeats_nothing(g.line)) paints_ = false;
     // a within rounding of 0 relative to its terms: the linear case.
     linear_equation_ = std::fabs(a_) <= 1e-12 * (cd_.length_squared() + dr_ * dr_);
 }
@@ -104,7 +112,8 @@ Gradient::Gradient(const PaintSweepGradient& g) : kind_(Kind::Sweep), line_(&g.l
     p0_ = g.center;
     start_deg_ = g.start_deg;
     end_deg_ = g.end_deg;
-    if (start_deg_ == end_deg_ && g.line.extend != Extend::Pad) paints_ = false;
+    if ((start_deg_ == end_deg_ && g.line.extend != Extend::Pad) || repeats_nothing(g.line))
+        paints_ = false;
 }
 
 bool Gradient::t_at(Point p, double& t) const {
