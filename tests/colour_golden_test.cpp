@@ -172,19 +172,22 @@ Difference compare(const Rgb& bezel, const Rgb& chromium) {
     return d;
 }
 
-// What a cell may differ by. The default for painted (COLRv1) glyphs: both renderers compute the
-// same paint graph in the same colour space, so the mean stays near rounding (1.5 levels of 255);
-// anti-aliased edges may differ much more on single pixels (different coverage rules, Skia's
-// supersampled analytic AA against bezel's exact area), and gradients by a few levels (Skia's
-// 8-bit gradient tables, bezel's float interpolation), which the bound on far pixels allows.
+// What a cell may differ by. Painted (COLRv1) glyphs: both renderers evaluate the same paint graph
+// in the same colour space (sRGB-encoded values, straight-colour gradient interpolation), so the
+// mean difference stays at a fraction of a level; what remains is anti-aliasing on edges (Skia's
+// supersampled coverage against bezel's exact area), where single pixels differ by up to a
+// quarter of the range, bounded by the fraction of far pixels. The figures measured for every
+// cell are in tests/golden/colour/README.md; these bounds leave about 1.5x headroom over the worst.
 struct Tolerance {
-    double mean = 1.5;            // levels of 255
-    double far_fraction = 0.01;   // of the cell's pixels
+    double mean = 1.0;            // levels of 255, the worst channel's mean
+    double far_fraction = 0.01;   // of the cell's pixels, differing by > kFarLevels
 };
-// Bitmap glyphs: the two scale the strike with different filters (Skia: bilinear with mipmaps in
-// sRGB-encoded values; bezel: box or bilinear in linear light), and place it on a different pixel
-// grid (Skia at the fractional position, bezel at the rounded one), so detail and edges differ.
-constexpr Tolerance kBitmapTolerance{6.0, 0.08};
+// Bitmap glyphs: the two resample the strike with different filters (Skia: bilinear or mipmapped
+// in sRGB-encoded values; bezel: box when shrinking, bilinear when enlarging, in linear light),
+// so detail and edges differ, the more so the further the strike is shrunk: 32 px from a 109 or
+// 136 px strike loses most of its detail either way.
+constexpr Tolerance kBitmapEnlargedTolerance{2.0, 0.02};
+constexpr Tolerance kBitmapShrunkTolerance{6.0, 0.07};
 
 // Glyphs where bezel follows the COLR specification and Chromium does not, each with the
 // tolerance that admits the documented difference (tests/golden/colour/README.md explains each).
@@ -314,7 +317,7 @@ TEST(ColourGolden, LoopingGraphIsRefusedAndChromiumDrawsNothing) {
 
 // The strike scaled to the size and placed by its metrics: its box is the strike's box times
 // size/strike, rounded to whole pixels (scale_rgba fills a whole target).
-TEST(ColourGolden, BitmapGlyphsMatchChromiumWithinBitmapTolerance) {
+TEST(ColourGolden, BitmapGlyphsMatchChromiumWithinBitmapTolerances) {
     const std::vector<Cell> cells = read_manifest();
     FontCache fonts;
     std::vector<std::string> failures;
@@ -347,8 +350,9 @@ TEST(ColourGolden, BitmapGlyphsMatchChromiumWithinBitmapTolerance) {
         ASSERT_EQ(golden.width, c.width) << c.file;
         const Difference d = compare(mine, golden);
         compared[c.format] += 1;
-        if (d.mean > kBitmapTolerance.mean || d.far_fraction > kBitmapTolerance.far_fraction) {
-            failures.push_back(figures(c.label() + " (" + c.format + ")", d, kBitmapTolerance));
+        const Tolerance& t = k < 1 ? kBitmapShrunkTolerance : kBitmapEnlargedTolerance;
+        if (d.mean > t.mean || d.far_fraction > t.far_fraction) {
+            failures.push_back(figures(c.label() + " (" + c.format + ")", d, t));
         }
     }
     EXPECT_EQ(compared["CBDT"], 2);
