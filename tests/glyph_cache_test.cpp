@@ -231,5 +231,32 @@ TEST(GlyphCache, HitsAllocateNothing) {
     EXPECT_EQ(found, 5 * gids.size());
 }
 
+
+TEST(GlyphCache, ColourGlyphHitsAllocateNothing) {
+    auto font = Font::open(std::string(BEZEL_FONTS_DIR) + "/colour/twemoji_smiley-glyf_colr_1.ttf");
+    ASSERT_TRUE(font) << font.error().message;
+    GlyphRasterizer rasterizer(*font);
+    GlyphCache cache;
+    GlyphRenderOptions o;
+    o.size_px = 32;
+    std::vector<GlyphId> gids;
+    for (char32_t c : {U'\u263A', U'\U0001F601', U'\U0001F603', U'\U0001F604'}) {
+        auto gid = font->glyph_for_char(c);
+        ASSERT_TRUE(gid);
+        gids.push_back(*gid);
+        auto got = cache.get(rasterizer, 1, *gid, o);
+        ASSERT_TRUE(got) << got.error().message;
+        ASSERT_TRUE((*got)->box.color);
+        ASSERT_NE((*got)->rgba.data, nullptr);
+    }
+    long before = g_allocations.load();
+    std::size_t found = 0;
+    for (int pass = 0; pass < 5; ++pass)
+        for (GlyphId gid : gids) found += cache.get(rasterizer, 1, gid, o).ok();
+    EXPECT_EQ(g_allocations.load() - before, 0);
+    EXPECT_EQ(found, 5 * gids.size());
+    EXPECT_EQ(cache.stats().misses, gids.size());
+}
+
 }  // namespace
 }  // namespace bezel

@@ -12,6 +12,7 @@
 #include "bezel/image.hpp"
 #include "bezel/intersect.hpp"
 #include "bezel/limits.hpp"
+#include "bezel/paint.hpp"
 #include "bezel/path.hpp"
 #include "bezel/raster.hpp"
 #include "bezel/smooth.hpp"
@@ -178,6 +179,37 @@ TEST(Limits, SurfacePastkMaxSurfacePatchesAndTessellationWallsIsAnError) {
                  std::to_string(kMaxBSplineGridSide));
 }
 
+TEST(Limits, PaintGraphDeeperThankMaxPaintDepthIsAnError) {
+    // A chain of transforms kMaxPaintDepth nodes long (the last a fill) is allowed; one more
+    // level is refused, by validate() and by the painter, before anything is painted.
+    ColorGlyph g;
+    for (PaintIndex i = 0; i + 1 < static_cast<PaintIndex>(kMaxPaintDepth); ++i)
+        g.nodes.push_back(PaintTransform{Affine::identity(), i + 1});
+    g.nodes.push_back(PaintSolid{});
+    EXPECT_TRUE(validate(g));
+    g.nodes.back() = PaintTransform{Affine::identity(), static_cast<PaintIndex>(g.nodes.size())};
+    g.nodes.push_back(PaintSolid{});
+    expect_error(validate(g), std::to_string(kMaxPaintDepth));
+    std::uint8_t px[4] = {1, 2, 3, 4};
+    Painter painter;
+    expect_error(painter.paint(g, {}, RgbaView{px, 1, 1, 4}), std::to_string(kMaxPaintDepth));
+    EXPECT_EQ(px[0], 1);
+}
+
+TEST(Limits, PaintGraphVisitingMoreThankMaxPaintNodesIsAnError) {
+    // Layer lists naming the next level twice: level k is reached 2^k times. 15 levels visit
+    // 2^16 − 1 nodes (allowed); 16 levels visit 2^17 − 1, refused.
+    auto dag = [](PaintIndex levels) {
+        ColorGlyph g;
+        for (PaintIndex i = 0; i < levels; ++i) g.nodes.push_back(PaintLayers{{i + 1, i + 1}});
+        g.nodes.push_back(PaintSolid{});
+        return g;
+    };
+    static_assert(kMaxPaintNodes == (std::size_t{1} << 16), "the levels below assume 2^16");
+    EXPECT_TRUE(validate(dag(15)));
+    expect_error(validate(dag(16)), std::to_string(kMaxPaintNodes));
+}
+
 TEST(Limits, ImageWiderThankMaxImageDimIsAnError) {
     std::vector<std::uint8_t> row(kMaxImageDim + 1, 255);
     const ConstMaskView wide{row.data(), kMaxImageDim + 1, 1, kMaxImageDim + 1};
@@ -196,11 +228,13 @@ TEST(Limits, ImageWiderThankMaxImageDimIsAnError) {
 // StaysWithinItsBoundAcrossManySizes); kMaxTextCodePoints, a CLI limit (bad_inputs_cli_test);
 // kMaxSyntheticBold (synthetic_bold_test, RefusesBoldOutOfRangeAndEvenOddFill);
 // kMaxSystemFontLists (system_fonts_test, ListCacheStaysWithinkMaxSystemFontLists);
-// kMaxCollectionFonts (text_fallback_test, BadListsAreErrorsNamingTheFile).
+// kMaxCollectionFonts (text_fallback_test, BadListsAreErrorsNamingTheFile); kMaxPaintDepth,
+// kMaxPaintNodes and kMaxPaintColorStops (color_glyph_test, BadColr.*); kMaxColorBitmapBytes
+// (color_glyph_test, ImageLargerThankMaxColorBitmapBytesIsRefusedFromItsHeader).
 // Not crossed by a test, because reaching them is seconds of work under the sanitizers (the
 // fuzz targets run against them instead): kMaxSvgPathPoints and kMaxCubicsPerArc (8 Mi points
 // of arcs), kMaxPathIntersections (2^20 crossings), kMaxIntersectWork, kMaxPathSegmentPairs,
-// kMaxStrokeSegments.
+// kMaxStrokeSegments and kMaxPaintOutlinePoints (2^22 points of distinct glyphs' outlines).
 
 }  // namespace
 }  // namespace bezel

@@ -239,13 +239,42 @@ TEST(FontFallback, TheFallbackSourceAddsFontsWhereTheListRunsOut) {
     EXPECT_EQ(source->calls, 2);
 }
 
-TEST(FontFallback, ARendererTakesNoBitmapOnlyFontFromTheFallback) {
+// The number of pixels of `page` whose channels differ (colour, not gray).
+int colour_pixels(const Image& page) {
+    int n = 0;
+    for (int y = 0; y < page.height(); ++y)
+        for (int x = 0; x < page.width(); ++x) {
+            const Rgba8 p = page.at(x, y);
+            if (p.r != p.g || p.g != p.b) ++n;
+        }
+    return n;
+}
+
+TEST(FontFallback, AnEmojiInALineIsDrawnFromTheColourFontOfTheList) {
     auto listed = FontCollection::open({{kDejaVu, 0, {}}, {kEmoji, 0, {}}});
     ASSERT_TRUE(listed);
-    auto refused = TextRenderer::open(std::move(*listed));
-    ASSERT_FALSE(refused);
-    EXPECT_NE(refused.error().message.find("NotoColorEmoji-subset.ttf"), std::string::npos);
+    auto renderer = TextRenderer::open(std::move(*listed));
+    ASSERT_TRUE(renderer) << renderer.error().message;
+    TextRenderOptions options;
+    options.shape.size_px = 32;
+    // DejaVu has a monochrome U+1F600 of its own: emoji presentation takes the colour font.
+    auto page = renderer->render("ab \U0001F600", options);
+    ASSERT_TRUE(page) << page.error().message;
+    EXPECT_TRUE(renderer->last_text_has_color());
+    EXPECT_EQ(renderer->missing_glyphs().count, 0u);
+    EXPECT_GT(colour_pixels(*page), 100);   // a 32-px yellow face
+    // A gray page cannot hold it: refused before drawing, and said so.
+    auto gray = renderer->render_gray("ab \U0001F600", options);
+    ASSERT_FALSE(gray);
+    EXPECT_TRUE(renderer->last_text_has_color());
+    EXPECT_NE(gray.error().message.find("colour"), std::string::npos);
+    // Text without the emoji stays gray.
+    auto plain = renderer->render_gray("ab", options);
+    ASSERT_TRUE(plain) << plain.error().message;
+    EXPECT_FALSE(renderer->last_text_has_color());
+}
 
+TEST(FontFallback, WithoutColourGlyphsARendererTakesNoBitmapOnlyFontFromTheFallback) {
     FontCollection fonts = open_fonts({kCantarell});
     auto source = std::make_shared<TableFallback>();
     source->table[U'\U0001F600'] = {kEmoji, 0, {}};
@@ -253,12 +282,29 @@ TEST(FontFallback, ARendererTakesNoBitmapOnlyFontFromTheFallback) {
     auto renderer = TextRenderer::open(std::move(fonts));
     ASSERT_TRUE(renderer) << renderer.error().message;
     TextRenderOptions options;
+    options.color.enabled = false;
     auto page = renderer->render_gray("a\U0001F600", options);
     ASSERT_TRUE(page) << page.error().message;
     EXPECT_EQ(renderer->fonts().size(), 1u);
     ASSERT_EQ(renderer->fonts().warnings().size(), 1u);
     EXPECT_NE(renderer->fonts().warnings()[0].find("bitmap-only"), std::string::npos);
     EXPECT_EQ(renderer->missing_glyphs().count, 1u);
+}
+
+TEST(FontFallback, WithColourGlyphsTheFallbackSuppliesTheColourFont) {
+    FontCollection fonts = open_fonts({kCantarell});
+    auto source = std::make_shared<TableFallback>();
+    source->table[U'\U0001F600'] = {kEmoji, 0, {}};
+    fonts.set_fallback(source);
+    auto renderer = TextRenderer::open(std::move(fonts));
+    ASSERT_TRUE(renderer) << renderer.error().message;
+    TextRenderOptions options;
+    options.shape.size_px = 24;
+    auto page = renderer->render("a\U0001F600", options);
+    ASSERT_TRUE(page) << page.error().message;
+    EXPECT_EQ(renderer->fonts().size(), 2u);
+    EXPECT_EQ(renderer->missing_glyphs().count, 0u);
+    EXPECT_GT(colour_pixels(*page), 50);
 }
 
 TEST(FontFallback, RendererDrawsEachFontsGlyphsAsThatFontAlone) {

@@ -1,13 +1,15 @@
 // `bezel atlas`: the glyphs of a set of characters rendered once and packed into one coverage
-// texture (gray PNG: value = coverage, 0 = empty), with JSON that tells a toolkit where each
-// glyph is and how to place it:
+// texture (gray PNG: value = coverage, 0 = empty; or --format rgba: colour glyphs in colour, the
+// rest white with alpha = coverage), with JSON that tells a toolkit where each glyph is and how
+// to place it:
 //
 // {
-//   "font": file, "size_px": number, "hinting": "none"|"light"|"full"|"auto", "width": px, "height": px, "padding": px,
+//   "font": file, "size_px": number, "hinting": "none"|"light"|"full"|"auto", "format": "gray"|"rgba",
+//   "width": px, "height": px, "padding": px,
 //   "glyphs": [{"char": string, "code_point": "U+XXXX", "gid": int,
 //               "x", "y", "width", "height": the texture rectangle (px, y down),
 //               "left", "top": bitmap offset from the pen (FreeType's bitmap_left / bitmap_top),
-//               "advance": px}]
+//               "advance": px, "color": whether the glyph is drawn in colour}]
 // }
 //
 // A glyph's pixel (i, j) goes at (pen_x + left + i, pen_y − top + j) on the page. Glyphs are
@@ -22,6 +24,7 @@
 #include "atlas_pack.hpp"
 #include "bezel/text.hpp"
 #include "cli_common.hpp"
+#include "color_args.hpp"
 #include "commands.hpp"
 #include "font_args.hpp"
 #include "font_list.hpp"
@@ -40,11 +43,13 @@ struct AtlasArgs {
     PngOptions png;  // --compression
     FontArgs font;
     FontListArgs fonts;         // --font, --fallback
+    ColorArgs color;            // --palette, --custom-palette
     double slant = 0;           // --font-slant
     double bold = 0;            // --font-bold
     std::string chars;
     std::string output_file;   // -o: the PNG
     std::string json_file;     // --json (default: stdout)
+    std::string format = "gray";   // --format: gray or rgba
     bool strict = false;       // --strict
     CLI::App* cmd = nullptr;
 };
@@ -85,7 +90,7 @@ int run_atlas(AtlasArgs& args) {
     auto variations = requested_variations(args.font);
     if (!variations) return fail_runtime(variations.error().message);
     if (!has_font_list(args.fonts)) {
-        auto font = open_font(args.font);
+        auto font = open_font(args.font, nullptr, FontUse::Glyphs);
         if (!font) return fail_runtime(font.error().message);
     }
     auto fonts = open_font_list(args.font, args.fonts, font_file_given(args.font, *args.cmd),
@@ -95,6 +100,13 @@ int run_atlas(AtlasArgs& args) {
     for (std::size_t i = 0; i < fonts->size(); ++i)
         rasterizers.push_back(std::make_unique<GlyphRasterizer>(fonts->font(i)));
     GlyphRenderOptions options;
+    auto color = color_options(args.color);
+    if (!color) return fail_usage(color.error().message, kAtlasCommand);
+    options.color = std::move(*color);
+    // The texture is tinted by the toolkit: text-colour entries of COLR glyphs are white too.
+    options.color.foreground = {255, 255, 255, 255};
+    if (Status s = check_palette(options.color, *fonts); !s) return fail_runtime(s.error().message);
+    const bool rgba = args.format == "rgba";
     options.size_px = args.font.size_px;
     options.hinting = hinting_of(args.font);
     options.slant = args.slant;
@@ -128,15 +140,25 @@ int run_atlas(AtlasArgs& args) {
     auto packing = pack_shelves(sizes, kMaxImageDim);
     if (!packing) return fail_runtime(packing.error().message);
 
-    Mask texture(packing->width, packing->height);
+    // Gray: one coverage byte a pixel (a colour glyph gives its alpha). RGBA: premultiplied while
+    // drawn, straight in the PNG.
+    Mask texture(rgba ? 0 : packing->width, rgba ? 0 : packing->height);
+    std::vector<std::uint8_t> colour_texture;
+    if (rgba) colour_texture.assign(4 * static_cast<std::size_t>(packing->width) * packing->height, 0);
+    const RgbaView colour_view{colour_texture.data(), packing->width, packing->height,
+                               4 * static_cast<std::ptrdiff_t>(packing->width)};
     const bool listed = fonts->size() > 1;
     nlohmann::ordered_json glyphs = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < entries.size(); ++i) {
         const Entry& e = entries[i];
         const AtlasRect& r = packing->rects[i];
         if (r.width > 0) {
-            auto drawn = rasterizers[e.font]->render(e.gid, options,
-                                                     texture.view().sub(r.x, r.y, r.width, r.height));
+            GlyphRasterizer& rasterizer = *rasterizers[e.font];
+            auto prepared = rasterizer.prepare(e.gid, options);
+            if (!prepared) return fail_runtime(prepared.error().message);
+            const Status drawn =
+                rgba ? rasterizer.draw_rgba(*prepared, colour_view.sub(r.x, r.y, r.width, r.height))
+                     : rasterizer.draw(*prepared, texture.view().sub(r.x, r.y, r.width, r.height));
             if (!drawn) return fail_runtime(drawn.error().message);
         }
         std::string utf8;
@@ -145,12 +167,14 @@ int run_atlas(AtlasArgs& args) {
                           {"gid", e.gid},          {"x", r.x},
                           {"y", r.y},              {"width", r.width},
                           {"height", r.height},    {"left", e.box.left},
-                          {"top", e.box.top},      {"advance", e.box.advance_px}});
+                          {"top", e.box.top},      {"advance", e.box.advance_px},
+                          {"color", e.box.color}});
         if (listed) glyphs.back()["font"] = e.font;
     }
     nlohmann::ordered_json doc = {{"font", fonts->source(0).file},
                                   {"size_px", args.font.size_px},
                                   {"hinting", hinting_name(options.hinting)},
+                                  {"format", args.format},
                                   {"width", packing->width},
                                   {"height", packing->height},
                                   {"padding", kAtlasPaddingPx},
@@ -162,7 +186,8 @@ int run_atlas(AtlasArgs& args) {
         doc["fonts"] = std::move(files);
     }
 
-    auto png = encode_png_gray(texture.view(), args.png);
+    auto png = rgba ? encode_png(to_image(colour_view), PngColor::Rgba, args.png)
+                    : encode_png_gray(texture.view(), args.png);
     if (!png) return fail_runtime(args.output_file + ": " + png.error().message);
     // The JSON is written last: a toolkit that sees it can rely on the texture beside it.
     auto written = write_output(args.output_file, std::string(png->begin(), png->end()));
@@ -180,7 +205,9 @@ Command add_atlas_command(CLI::App& app) {
     args->font.size_px = kDefaultAtlasSizePx;
     cmd->footer(
         "The texture is a gray PNG of coverage (0 empty, 255 full), not a picture: a toolkit\n"
-        "tints it when it draws, so there are no colours to choose. Shelf-packed with 1 px of\n"
+        "tints it when it draws, so there are no colours to choose. With --format rgba it is an\n"
+        "RGBA PNG (straight alpha): colour glyphs (COLR, CBDT, sbix) in their colours, the rest\n"
+        "white, to be tinted; each glyph's \"color\" says which. Shelf-packed with 1 px of\n"
         "padding, its width a power of two, its height tight. The JSON lists per character its\n"
         "gid, texture rectangle x/y/width/height, bitmap left/top (as FreeType) and advance.\n"
         "Glyphs are drawn at whole-pixel pens, hinted as --hinting says.\n"
@@ -191,17 +218,23 @@ Command add_atlas_command(CLI::App& app) {
         "  bezel atlas 0123456789 -o digits.png --json digits.json");
     add_font_args(*cmd, args->font);
     add_font_list_options(*cmd, args->fonts);
+    add_color_options(*cmd, args->color);
     add_slant_option(*cmd, args->slant);
     add_bold_option(*cmd, args->bold);
     cmd->add_option("CHARS", args->chars,
                     "The characters, as --chars; a lone word that is no font file is CHARS");
     cmd->add_option("--chars", args->chars, "The characters (UTF-8); repeats are packed once")
         ->type_name("STRING");
-    cmd->add_option("-o,--output-file", args->output_file, "The texture, a gray PNG")
+    cmd->add_option("-o,--output-file", args->output_file, "The texture, a PNG (gray, or RGBA with --format rgba)")
         ->required()
         ->type_name("FILE");
     cmd->add_option("--json", args->json_file, "The metrics as JSON (default: stdout)")
         ->type_name("FILE");
+    cmd->add_option("--format", args->format,
+                    "gray: a coverage texture (a colour glyph gives its alpha); rgba: colour "
+                    "glyphs in their colours, other glyphs white with alpha = coverage "
+                    "(default gray)")
+        ->check(CLI::IsMember({"gray", "rgba"}));
     add_strict_option(*cmd, args->strict);
     add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_atlas(*args); }};

@@ -165,7 +165,8 @@ Expected<std::vector<VariationSetting>> requested_variations(const FontArgs& arg
     return settings;
 }
 
-Expected<Font> open_font(const FontArgs& args, std::vector<VariationSetting>* applied) {
+Expected<Font> open_font(const FontArgs& args, std::vector<VariationSetting>* applied,
+                         FontUse use) {
     std::error_code ec;
     auto status = std::filesystem::status(args.file, ec);
     if (!std::filesystem::exists(status)) return Error{args.file + ": no such file"};
@@ -174,9 +175,10 @@ Expected<Font> open_font(const FontArgs& args, std::vector<VariationSetting>* ap
 
     auto font = Font::open(args.file, args.face_index);
     if (!font) return font.error();
-    // Every command that opens a font this way draws or lists outlines: say what is wrong with
-    // a bitmap-only font once, before any per-character message.
-    if (Status s = font->require_outlines(); !s) return s.error();
+    // Say what is wrong with a bitmap-only font once, before any per-character message; a
+    // colour bitmap font is drawable where colour glyphs are.
+    if (!(use == FontUse::Glyphs && font->has_color_bitmaps()))
+        if (Status s = font->require_outlines(); !s) return s.error();
     if (!args.variations.empty() || !args.named_instance.empty()) {
         auto settings = requested_variations(args);
         if (!settings) return settings.error();

@@ -66,11 +66,16 @@ Expected<std::optional<std::string>> lone_word_as_text(std::string& font_file, c
 // Errors name the file: a font with no such instance (the message lists the ones it has).
 Expected<std::vector<VariationSetting>> requested_variations(const FontArgs& args);
 
+// What a command does with a font: its outlines (outline, info's outline facts), or its glyphs
+// drawn, colour glyphs in colour (render, glyph, atlas), which a colour bitmap font has too.
+enum class FontUse { Outlines, Glyphs };
+
 // Opens args.file at args.face_index and applies requested_variations(args), also stored into
 // `applied` when given (empty when none were asked for). Errors name the file and, for
 // variations, the axis; a missing file or a directory is reported as such before FreeType sees it,
-// and a bitmap-only font (no outlines to draw: Font::require_outlines) is an error too.
-Expected<Font> open_font(const FontArgs& args,
-                         std::vector<VariationSetting>* applied = nullptr);
+// and a bitmap-only font (no outlines to draw: Font::require_outlines) is an error too, unless
+// `use` is Glyphs and its bitmaps are colour.
+Expected<Font> open_font(const FontArgs& args, std::vector<VariationSetting>* applied = nullptr,
+                         FontUse use = FontUse::Outlines);
 
 }  // namespace bezel::cli

@@ -102,9 +102,11 @@ Expected<FontCollection> open_font_list(const FontArgs& font, const FontListArgs
     if (!sources) return sources.error();
     auto fonts = FontCollection::open(*sources);
     if (!fonts) return fonts.error();
+    // Colour bitmap fonts are drawn in colour (glyph.hpp); other bitmap-only fonts have nothing
+    // bezel draws.
     for (std::size_t i = 0; i < fonts->size(); ++i)
-        if (Status s = fonts->font(i).require_outlines(); !s) return s.error();
-    fonts->set_outlines_only(true);
+        if (!fonts->font(i).has_color_bitmaps())
+            if (Status s = fonts->font(i).require_outlines(); !s) return s.error();
     if (!list.no_system_fonts)
         fonts->set_fallback(system_fallback(
             !list.family.empty() ? list.family : fonts->font(0).family_name()));

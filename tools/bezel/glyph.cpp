@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "cli_common.hpp"
+#include "color_args.hpp"
 #include "commands.hpp"
 #include "font_args.hpp"
 #include "font_list.hpp"
@@ -24,6 +25,7 @@ struct GlyphArgs {
     PngOptions png;  // --compression
     FontArgs font;
     FontListArgs fonts;         // --font, --fallback
+    ColorArgs color;            // --palette, --custom-palette
     double slant = 0;           // --font-slant
     double bold = 0;            // --font-bold
     GlyphChoice which;
@@ -92,6 +94,13 @@ int run_glyph(GlyphArgs& args) {
     options.bold = args.bold;
     options.offset_px = *offset;
     options.box = GlyphBoxMode::FreeType;   // the JSON contract: FT_Render_Glyph's box
+    auto color = color_options(args.color);
+    if (!color) return fail_usage(color.error().message, kGlyphCommand);
+    options.color = std::move(*color);
+    if (!args.foreground.empty()) {
+        // A COLR glyph's text-colour entries take the ink (checked at parsing).
+        if (auto ink = parse_color(args.foreground)) options.color.foreground = *ink;
+    }
     FillOptions& fill = options.fill;
     fill.format = args.lcd.empty() ? CoverageFormat::Gray : CoverageFormat::Lcd;
     fill.lcd_order = args.lcd == "bgr" ? LcdOrder::Bgr : LcdOrder::Rgb;
@@ -111,11 +120,12 @@ int run_glyph(GlyphArgs& args) {
     auto variations = requested_variations(args.font);
     if (!variations) return fail_runtime(variations.error().message);
     if (!has_font_list(args.fonts)) {
-        auto font = open_font(args.font);
+        auto font = open_font(args.font, nullptr, FontUse::Glyphs);
         if (!font) return fail_runtime(font.error().message);
     }
     auto fonts = open_font_list(args.font, args.fonts, font_file_given(args.font, *args.cmd), std::move(*variations));
     if (!fonts) return fail_runtime(fonts.error().message);
+    if (Status s = check_palette(options.color, *fonts); !s) return fail_runtime(s.error().message);
     auto requests = requested_glyphs(args.which, *fonts);
     if (!requests) return fail_runtime(requests.error().message);
     const bool listed = fonts->size() > 1;
@@ -137,6 +147,11 @@ int run_glyph(GlyphArgs& args) {
         GlyphRasterizer& rasterizer = *rasterizers[r.font];
         auto prepared = rasterizer.prepare(r.gid, options);
         if (!prepared) return fail_runtime(prepared.error().message);
+        if (rasterizer.color_format(r.gid) == ColorFormat::Svg)
+            std::cerr << "bezel: warning: " << font->file() << ": glyph " << r.gid << " ("
+                      << font->glyph_name(r.gid)
+                      << ") is an SVG colour glyph, which bezel does not paint: drawn from its "
+                         "outline\n";
         const GlyphBox& box = prepared->box;
         pixels += static_cast<std::size_t>(box.width) * static_cast<std::size_t>(box.height);
         if (pixels > kMaxGlyphOutputPixels)
@@ -147,9 +162,12 @@ int run_glyph(GlyphArgs& args) {
                       listed ? font->file() : std::string(), box, fill.format, fill.lcd_order, {}};
         const int row_bytes = box.width * g.bytes_per_pixel();
         g.pixels.assign(static_cast<std::size_t>(row_bytes) * static_cast<std::size_t>(box.height), 0);
-        const MaskView view{g.pixels.data(), row_bytes, box.height, row_bytes};
-        if (Status st = rasterizer.draw(*prepared, view); !st)
-            return fail_runtime(font->file() + ": " + st.error().message);
+        const Status st =
+            box.color ? rasterizer.draw_rgba(*prepared, RgbaView{g.pixels.data(), box.width,
+                                                                 box.height, row_bytes})
+                      : rasterizer.draw(*prepared, MaskView{g.pixels.data(), row_bytes,
+                                                            box.height, row_bytes});
+        if (!st) return fail_runtime(font->file() + ": " + st.error().message);
         glyphs.push_back(std::move(g));
     }
 
@@ -191,19 +209,26 @@ Command add_glyph_command(CLI::App& app) {
         "mode; --overlap accurate uses it for every glyph. --lcd samples 3x horizontally through\n"
         "FreeType's default 5-tap filter; the box is one pixel wider on each side and each pixel\n"
         "has R, G, B subpixel coverage.\n"
-        "Formats: ascii (default; one character per pixel, per subpixel with --lcd); json, an\n"
-        "array with one object per glyph: gid, name, char and code_point (when known), size,\n"
-        "left, top, width (pixels), height, advance, mode (gray|lcd-rgb|lcd-bgr), overlap\n"
-        "(accumulate|accurate) and rows (one hex string per row, 2 digits per pixel, 6 for LCD);\n"
+        "Colour glyphs (COLRv1, COLRv0, CBDT, sbix) are drawn in colour (--palette,\n"
+        "--custom-palette; text-colour entries take --foreground), boxed around their paint;\n"
+        "SVG glyphs are drawn from their outlines, with a warning.\n"
+        "Formats: ascii (default; one character per pixel, per subpixel with --lcd; a colour\n"
+        "glyph's alpha); json, an array with one object per glyph: gid, name, char and\n"
+        "code_point (when known), size, left, top, width (pixels), height, advance, mode\n"
+        "(gray|lcd-rgb|lcd-bgr|rgba), overlap (accumulate|accurate) and rows (one hex string per\n"
+        "row, 2 digits per pixel, 6 for LCD, 8 for rgba: R, G, B, A premultiplied);\n"
         "png and pgm (PPM with --lcd or colours): all glyphs side by side, one column apart, on\n"
         "a common baseline, as a picture: ink on paper, black on white unless --foreground/\n"
-        "--background; with --coverage the coverage itself (0 = empty, 255 = covered).\n"
+        "--background (colour glyphs make it RGB); with --coverage the coverage itself (0 =\n"
+        "empty, 255 = covered; RGBA on transparent when it holds colour glyphs).\n"
         "Examples:\n"
         "  bezel glyph --char g --font-size 24\n"
         "  bezel glyph font.ttf --text 'Hamburg' --font-size 32 -o hamburg.png\n"
-        "  bezel glyph --gid 36 --font-size 12 --lcd rgb --offset 0.25,0 -O json");
+        "  bezel glyph --gid 36 --font-size 12 --lcd rgb --offset 0.25,0 -O json\n"
+        "  bezel glyph NotoColorEmoji.ttf --char 😀 --font-size 64 -o emoji.png");
     add_font_args(*cmd, args->font);
     add_font_list_options(*cmd, args->fonts);
+    add_color_options(*cmd, args->color);
     add_slant_option(*cmd, args->slant);
     add_bold_option(*cmd, args->bold);
     add_glyph_choice(*cmd, args->which, "Each character of a string (cmap, no shaping)");

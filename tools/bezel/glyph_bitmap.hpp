@@ -43,11 +43,13 @@ struct GlyphBitmap {
     GlyphBox box;                       // width in display pixels
     CoverageFormat format = CoverageFormat::Gray;
     LcdOrder lcd_order = LcdOrder::Rgb;
-    std::vector<std::uint8_t> pixels;   // rows packed: width bytes, or 3·width for LCD (R, G, B)
-    int bytes_per_pixel() const { return format == CoverageFormat::Lcd ? 3 : 1; }
+    // rows packed: width bytes, 3·width for LCD (R, G, B), 4·width for a colour glyph
+    // (box.color: premultiplied R, G, B, A, as GlyphRasterizer::draw_rgba writes it)
+    std::vector<std::uint8_t> pixels;
+    int bytes_per_pixel() const { return box.color ? 4 : format == CoverageFormat::Lcd ? 3 : 1; }
 };
 
-const char* mode_name(const GlyphBitmap& g);   // "gray", "lcd-rgb", "lcd-bgr"
+const char* mode_name(const GlyphBitmap& g);   // "gray", "lcd-rgb", "lcd-bgr", "rgba"
 
 // Output formats (glyph_output.cpp).
 // Coverage as text, one character per byte of `mask` from the ramp " .:-=+*#%@" (any nonzero
@@ -71,7 +73,11 @@ inline constexpr int kMaxGlyphMarginPx = 4096;
 // All glyphs side by side, left to right, one empty column apart, top rows aligned on a common
 // baseline, options.margin_px empty pixels around them, painted in options.colours. Gray
 // coverage in gray colours gives a gray PNG; LCD modes or other colours an RGB one (RGBA for
-// translucent colours). An error when every glyph is empty (no image of 0 × 0 exists).
+// translucent colours). Colour glyphs are composited onto the paper "over" in sRGB bytes, as
+// the picture convention mixes ink (out = glyph + paper·(1 − alpha), premultiplied), and make
+// the picture RGB (RGBA on translucent paper); without colours (--coverage) a picture holding
+// colour glyphs is RGBA on transparent, those glyphs as they are and coverage as black ink of
+// that alpha. An error when every glyph is empty (no image of 0 × 0 exists).
 Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs,
                                  const GlyphPictureOptions& options);
 // The same picture as binary PGM (P5) when gray, else PPM (P6).

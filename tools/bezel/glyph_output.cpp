@@ -97,9 +97,56 @@ int picture_bpp(const std::vector<GlyphBitmap>& glyphs) {
     return glyphs.empty() ? 1 : glyphs.front().bytes_per_pixel();
 }
 
+bool any_color(const std::vector<GlyphBitmap>& glyphs) {
+    for (const GlyphBitmap& g : glyphs)
+        if (g.box.color) return true;
+    return false;
+}
+
+// The picture of glyphs some of which are colour: every glyph drawn onto the paper (transparent
+// without colours) by its own kind, premultiplied "over" in sRGB bytes.
+Expected<Image> color_picture(const std::vector<GlyphBitmap>& glyphs,
+                              const std::optional<PictureColours>& colours, int margin) {
+    Layout l = layout(glyphs, margin);
+    if (l.width == 0 || l.height == 0)
+        return Error{"every glyph is empty: there is no picture to write"};
+    const PictureColours ink_only{{0, 0, 0, 255}, {0, 0, 0, 0}};
+    const PictureColours& c = colours ? *colours : ink_only;
+    Image picture(l.width, l.height, c.paper);
+    for (std::size_t i = 0; i < glyphs.size(); ++i) {
+        const GlyphBitmap& g = glyphs[i];
+        const int row0 = l.baseline - g.box.top;
+        const int bpp = g.bytes_per_pixel();
+        for (int y = 0; y < g.box.height; ++y)
+            for (int x = 0; x < g.box.width; ++x) {
+                const std::uint8_t* p =
+                    g.pixels.data() + (static_cast<std::size_t>(y) * g.box.width + x) * bpp;
+                Rgba8& out = picture.at(l.x[i] + x, row0 + y);
+                if (bpp == 1) {
+                    out = paint(c, p[0] / 255.0);
+                } else if (bpp == 3) {
+                    out = paint_rgb(c, p[0] / 255.0, p[1] / 255.0, p[2] / 255.0);
+                } else {
+                    // Premultiplied source over the straight paper, back to straight alpha.
+                    const double a = p[3] / 255.0, pa = out.a / 255.0;
+                    const double alpha = a + pa * (1 - a);
+                    auto channel = [&](std::uint8_t src, std::uint8_t dst) {
+                        const double premul = src + dst * pa * (1 - a);
+                        return static_cast<std::uint8_t>(
+                            alpha > 0 ? std::min(255.0, premul / alpha + 0.5) : 0);
+                    };
+                    out = {channel(p[0], out.r), channel(p[1], out.g), channel(p[2], out.b),
+                           static_cast<std::uint8_t>(alpha * 255 + 0.5)};
+                }
+            }
+    }
+    return picture;
+}
+
 }  // namespace
 
 const char* mode_name(const GlyphBitmap& g) {
+    if (g.box.color) return "rgba";
     if (g.format == CoverageFormat::Gray) return "gray";
     return g.lcd_order == LcdOrder::Bgr ? "lcd-bgr" : "lcd-rgb";
 }
@@ -123,6 +170,13 @@ std::string glyphs_ascii(const std::vector<GlyphBitmap>& glyphs, const GlyphRend
                "x" + std::to_string(g.box.height) + ", left " + std::to_string(g.box.left) + ", top " +
                std::to_string(g.box.top) + ", advance " + six_digits(g.box.advance_px);
         if (g.box.overlap == OverlapMode::Accurate) out += ", accurate overlap";
+        if (g.box.color) {
+            out += " (colour; its alpha shown)\n";
+            std::vector<std::uint8_t> alpha(g.pixels.size() / 4);
+            for (std::size_t k = 0; k < alpha.size(); ++k) alpha[k] = g.pixels[4 * k + 3];
+            out += ascii_art(ConstMaskView{alpha.data(), g.box.width, g.box.height, g.box.width});
+            continue;
+        }
         if (g.format == CoverageFormat::Lcd) out += " (one character per subpixel)";
         out += "\n";
         const int row_bytes = g.box.width * g.bytes_per_pixel();
@@ -176,6 +230,11 @@ Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs,
                                  const GlyphPictureOptions& options) {
     const std::optional<PictureColours>& colours = options.colours;
     const PngOptions& png_options = options.png;
+    if (any_color(glyphs)) {
+        auto picture = color_picture(glyphs, colours, options.margin_px);
+        if (!picture) return picture.error();
+        return picture_png(*picture, false, !colours || colours->translucent(), png_options);
+    }
     Layout l;
     const int bpp = picture_bpp(glyphs);
     auto px = compose(glyphs, l, bpp, options.margin_px);
@@ -197,6 +256,11 @@ Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs,
 Expected<std::string> glyphs_pnm(const std::vector<GlyphBitmap>& glyphs,
                                  const GlyphPictureOptions& options) {
     const std::optional<PictureColours>& colours = options.colours;
+    if (any_color(glyphs)) {
+        auto picture = color_picture(glyphs, colours, options.margin_px);
+        if (!picture) return picture.error();
+        return picture_pnm(*picture, false);
+    }
     Layout l;
     const int bpp = picture_bpp(glyphs);
     auto px = compose(glyphs, l, bpp, options.margin_px);

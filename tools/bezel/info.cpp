@@ -89,6 +89,8 @@ Command add_info_command(CLI::App& app) {
         "representative letters of it. With --coverage (or TEXT: a lone word that is no font\n"
         "file), only which of the text's characters the font maps, each once; with --font or\n"
         "--fallback, which font of the list draws each (font fallback, as render draws it).\n"
+        "\"colour\" lists the colour-glyph tables (COLRv1, COLRv0, CBDT, sbix; SVG glyphs are\n"
+        "drawn from their outlines) and each CPAL palette's entries (--palette N picks one).\n"
         "Examples:\n"
         "  bezel info\n"
         "  bezel info 'Grüße, Ελλάδα'\n"

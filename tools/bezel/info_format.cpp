@@ -11,7 +11,10 @@
 //   "axes": [{"tag", "name", "min", "default", "max"}],
 //   "named_instances": [{"name": string, "coordinates": {"<tag>": number, ...}}],
 //   "tables": [{"tag": string (4 characters), "length": int (bytes)}],
-//   "scripts": [ISO 15924 tag, ...]
+//   "scripts": [ISO 15924 tag, ...],
+//   "color": {"formats": ["COLRv1"|"COLRv0"|"CBDT"|"sbix"|"SVG", ...],
+//             "palettes": [{"entries": ["#rrggbbaa", ...], "light_background": bool,
+//                           "dark_background": bool}]}
 // }
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -42,6 +45,22 @@ void line(std::string& out, const char* key, const std::string& value) {
     out += '\n';
 }
 
+std::vector<std::string> color_format_names(const ColorTables& t) {
+    std::vector<std::string> out;
+    if (t.colr_v1) out.emplace_back("COLRv1");
+    if (t.colr_v0) out.emplace_back("COLRv0");
+    if (t.cbdt) out.emplace_back("CBDT");
+    if (t.sbix) out.emplace_back("sbix");
+    if (t.svg) out.emplace_back("SVG");
+    return out;
+}
+
+std::string hex_colour(Rgba8 c) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "#%02x%02x%02x%02x", c.r, c.g, c.b, c.a);
+    return buf;
+}
+
 }  // namespace
 
 std::string format_info_text(const FontInfo& info) {
@@ -66,6 +85,18 @@ std::string format_info_text(const FontInfo& info) {
     std::string scripts;
     for (const std::string& s : info.scripts) scripts += (scripts.empty() ? "" : " ") + s;
     line(out, "scripts", scripts.empty() ? "(none of the probed scripts)" : scripts);
+    std::string colour;
+    for (const std::string& f : color_format_names(info.color)) colour += (colour.empty() ? "" : " ") + f;
+    if (info.color.svg) colour += " (SVG glyphs are drawn from their outlines)";
+    line(out, "colour", colour.empty() ? "none" : colour);
+    for (std::size_t i = 0; i < info.palettes.size(); ++i) {
+        const Palette& p = info.palettes[i];
+        std::string entries;
+        for (Rgba8 c : p.entries) entries += " " + hex_colour(c);
+        if (p.for_light_background) entries += " (for light backgrounds)";
+        if (p.for_dark_background) entries += " (for dark backgrounds)";
+        line(out, "palette", std::to_string(i) + ":" + entries);
+    }
     line(out, "tables", std::to_string(info.tables.size()));
     for (const FontTable& t : info.tables) {
         char buf[48];
@@ -104,6 +135,15 @@ std::string format_info_json(const FontInfo& info) {
     for (const FontTable& t : info.tables)
         j["tables"].push_back({{"tag", t.tag}, {"length", t.length}});
     j["scripts"] = info.scripts;
+    ordered_json palettes = ordered_json::array();
+    for (const Palette& p : info.palettes) {
+        ordered_json entries = ordered_json::array();
+        for (Rgba8 c : p.entries) entries.push_back(hex_colour(c));
+        palettes.push_back({{"entries", std::move(entries)},
+                            {"light_background", p.for_light_background},
+                            {"dark_background", p.for_dark_background}});
+    }
+    j["color"] = {{"formats", color_format_names(info.color)}, {"palettes", std::move(palettes)}};
     return j.dump(2) + "\n";
 }
 

@@ -15,6 +15,7 @@
 #include "bezel/stroke.hpp"
 #include "bezel/text.hpp"
 #include "cli_common.hpp"
+#include "color_args.hpp"
 #include "commands.hpp"
 #include "draw.hpp"
 #include "font_args.hpp"
@@ -45,6 +46,7 @@ constexpr double kMaxOutlinedPagePixels = double{1 << 26};
 struct RenderArgs {
     FontArgs font;
     FontListArgs fonts;         // --font, --fallback
+    ColorArgs color;            // --palette, --custom-palette
     double slant = 0;           // --font-slant
     double bold = 0;            // --font-bold
     std::string text;           // TEXT or --text
@@ -234,6 +236,9 @@ int run_render(RenderArgs& args) {
     if (!bg) return fail_usage("--background: " + bg.error().message, kRenderCommand);
     options.foreground = *fg;
     options.background = *bg;
+    auto color = color_options(args.color);
+    if (!color) return fail_usage(color.error().message, kRenderCommand);
+    options.color = std::move(*color);
     options.format = args.lcd.empty() ? CoverageFormat::Gray : CoverageFormat::Lcd;
     options.lcd_order = args.lcd == "bgr" ? LcdOrder::Bgr : LcdOrder::Rgb;
 
@@ -289,6 +294,7 @@ int run_render(RenderArgs& args) {
     auto fonts = open_font_list(args.font, args.fonts,
                                 font_file_given(args.font, *args.cmd), {});
     if (!fonts) return fail_runtime(fonts.error().message);
+    if (Status s = check_palette(options.color, *fonts); !s) return fail_runtime(s.error().message);
     auto renderer = TextRenderer::open(std::move(*fonts));
     if (!renderer) return fail_runtime(renderer.error().message);
     const bool gray = options.format == CoverageFormat::Gray && fg->r == fg->g && fg->g == fg->b &&
@@ -302,12 +308,20 @@ int run_render(RenderArgs& args) {
         // Gray text to a gray file: the page is one byte per pixel from the start (the same
         // bytes the RGBA page would give after conversion, a quarter of the memory).
         bytes = render_gray_page(*renderer, text, options, *format, args.png, destination);
+        // A gray page cannot show colour glyphs: such text becomes an RGB page.
+        if (!bytes && renderer->last_text_has_color()) {
+            auto page = renderer->render(text, options);
+            if (!page) return fail_runtime(page.error().message);
+            bytes = encode_page(*page, *format, false, alpha, columns, args.png);
+            if (!bytes) return fail_runtime(destination + ": " + bytes.error().message);
+        }
     } else {
         auto page = args.stroke_px > 0
                         ? render_outlined(*renderer, text, options, args.stroke_px, outlined_missing)
                         : renderer->render(text, options);
         if (!page) return fail_runtime(page.error().message);
-        bytes = encode_page(*page, *format, gray && !alpha, alpha, columns, args.png);
+        bytes = encode_page(*page, *format, gray && !alpha && !renderer->last_text_has_color(),
+                            alpha, columns, args.png);
         if (!bytes) return fail_runtime(destination + ": " + bytes.error().message);
     }
     if (!bytes) return fail_runtime(bytes.error().message);
@@ -315,6 +329,10 @@ int run_render(RenderArgs& args) {
         args.stroke_px > 0 ? outlined_missing : renderer->missing_glyphs();
     for (const std::string& w : renderer->fonts().warnings())
         std::cerr << "bezel: warning: " << w << "\n";
+    if (const std::size_t svg = renderer->last_text_svg_glyphs(); svg > 0)
+        std::cerr << "bezel: warning: " << svg << " glyph" << (svg == 1 ? " is an SVG colour glyph"
+                                                                       : "s are SVG colour glyphs")
+                  << ", which bezel does not paint: drawn from the outline\n";
     if (Status s = report_missing_glyphs(font_list_names(renderer->fonts()), missing, args.strict);
         !s)
         return fail_runtime(s.error().message);
@@ -346,6 +364,7 @@ Command add_render_command(CLI::App& app) {
         "  bezel render -O ansi 'Hello'");
     add_font_args(*cmd, args->font);
     add_font_list_options(*cmd, args->fonts);
+    add_color_options(*cmd, args->color);
     add_slant_option(*cmd, args->slant);
     add_bold_option(*cmd, args->bold);
     cmd->add_option("TEXT", args->text, "The text (UTF-8); default: a sample paragraph");

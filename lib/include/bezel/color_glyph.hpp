@@ -2,10 +2,14 @@
 // graphs and version 0 layers with their CPAL palettes (as bezel/paint.hpp's ColorGlyph, painted by
 // bezel), and CBDT/CBLC and sbix bitmap strikes.
 //
-// The route is FreeType's COLR functions (FT_Get_Color_Glyph_Paint, FT_Get_Paint,
-// FT_Get_Colorline_Stops, FT_Get_Color_Glyph_ClipBox, FT_Get_Color_Glyph_Layer, FT_Palette_*) and
-// FT_LOAD_COLOR for bitmaps. Variable COLRv1 paints are read at the font's default instance: the
-// FreeType this links (2.12) returns the paints' default values without their variation deltas.
+// COLR (versions 0 and 1) is read by bezel from the table's bytes, every offset bounds-checked:
+// Debian 12's FreeType 2.12.1 is built with its COLRv1 functions (FT_Get_Color_Glyph_Paint,
+// FT_Get_Paint, FT_Get_Colorline_Stops, FT_Get_Color_Glyph_ClipBox) compiled out — they return 0
+// for every glyph — and its COLRv0 iterator stops silently at a bad index. CPAL palettes come from
+// FreeType's FT_Palette_* (the palette type flags from the table: FreeType 2.12.1 reads them as
+// 0), CBDT/CBLC and sbix images from FreeType's FT_LOAD_COLOR. Variable COLRv1 paints (the Var*
+// formats, variable clip boxes and colour stops) are read at their default values: the variation
+// deltas are not applied, so a variable colour font draws its default instance at every setting.
 // SVG-in-OpenType glyphs are not drawn in colour: color_format() reports them as Svg, and they are
 // drawn from their outline (or as .notdef) like any other glyph, with a warning from the callers.
 //
@@ -58,15 +62,26 @@ struct ColorGlyphOptions {
 
 // The COLR paint graph of `gid` (version 1, or version 0's layers as PaintLayers of
 // PaintGlyph(PaintSolid)), with palette colours resolved and every outline it clips to loaded in
-// font units (y up). The graph is walked with kMaxPaintDepth and kMaxPaintNodes: a graph that
-// loops or is deeper is an error naming the glyph ("glyph 12 (name): COLR paint graph nests
-// deeper than 64"), as are a palette index out of range (naming the index and the count), a glyph
-// without COLR data, and a damaged table FreeType reports.
+// font units (y up), exactly as the font stores them (FT_LOAD_NO_SCALE; no rounding). Clip boxes
+// are the ClipList's integers, in font units. Geometry is the table's fixed-point values converted
+// exactly: F2Dot14 angles in units of 180°, counter-clockwise; each Translate, Scale, Rotate and
+// Skew (with or without a centre c, as T(c)·M·T(−c)) becomes one PaintTransform; sweep angles are
+// un-biased into degrees. A PaintColrGlyph of one glyph is built once and shared by every parent;
+// one of a glyph without a paint graph paints nothing (the spec's rule). The graph is walked with
+// kMaxPaintDepth and kMaxPaintNodes: a graph that loops or is deeper is an error naming the glyph
+// ("f.ttf: glyph 12 (name): COLR paint graph nests deeper than 64", "… loops: PaintColrGlyph of
+// glyph 12 (name) inside itself"), as are a palette or custom entry index out of range (naming the
+// index and the count), a palette number out of range, a glyph without COLR data, and a damaged
+// table (what and at which offset).
 Expected<ColorGlyph> load_color_glyph(Font& font, GlyphId gid, const ColorGlyphOptions& options);
 
 // A bitmap colour glyph from the strike nearest the size (the smallest strike at least as large,
 // else the largest), as FreeType decodes it (FT_LOAD_COLOR: BGRA, premultiplied) converted to
-// premultiplied RGBA, with its placement at the strike's size.
+// premultiplied RGBA, with its placement at the strike's size. sbix images are placed by their
+// originOffsetX/Y (left = originOffsetX, top = originOffsetY + height); the advance is CBDT's
+// strike metric, or for sbix hmtx's advance scaled to the strike exactly. A glyph the strike has no
+// image for (a space) is an empty 0×0 bitmap with its advance. Loading leaves the face's size as
+// the outline calls set it (the strike is selected on a size object of its own).
 struct ColorBitmap {
     std::vector<std::uint8_t> rgba;   // premultiplied R, G, B, A; rows packed
     int width = 0, height = 0;
@@ -75,7 +90,9 @@ struct ColorBitmap {
     double advance_px = 0;            // at strike_px
     ConstRgbaView view() const { return {rgba.data(), width, height, 4 * std::ptrdiff_t{width}}; }
 };
-// Errors name the glyph: no bitmap for it, a damaged or oversized image (kMaxColorBitmapBytes).
+// Errors name the glyph: size out of range, the font has no CBDT or sbix strikes, a damaged image,
+// one that is not BGRA, or one larger than kMaxColorBitmapBytes (refused from the image's header,
+// before FreeType decodes its pixels).
 Expected<ColorBitmap> load_color_bitmap(Font& font, GlyphId gid, double size_px);
 
 }  // namespace bezel

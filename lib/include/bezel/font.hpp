@@ -142,10 +142,13 @@ public:
     std::size_t glyph_count() const;
     bool is_scalable() const;
     bool has_cubic_outlines() const;  // CFF/CFF2 rather than TrueType glyf
-    bool has_color_bitmaps() const;   // CBDT, sbix or other colour glyph images
+    // The face has colour glyphs of any kind (FreeType's FT_HAS_COLOR: COLR with CPAL, CBDT,
+    // sbix); bezel/color_glyph.hpp's color_tables() says which, and draws them.
+    bool has_color_bitmaps() const;
     // ok when the face has outlines, which is all bezel draws; for a bitmap-only face (colour
     // emoji, EBDT, BDF) an Error naming the file: "NotoColorEmoji.ttf: a bitmap-only font (no
-    // outlines); colour bitmap fonts are not supported yet". Every outline call fails with it.
+    // outlines); colour bitmap fonts are not supported yet". Every outline call fails with it;
+    // the colour glyphs of such a font are read with load_color_bitmap (bezel/color_glyph.hpp).
     Status require_outlines() const;
 
     // For a bitmap-only sfnt, units per em, ascender, descender and line gap come from its head

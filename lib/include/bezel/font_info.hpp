@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bezel/color_glyph.hpp"
 #include "bezel/expected.hpp"
 #include "bezel/font.hpp"
 
@@ -38,6 +39,9 @@ struct FontInfo {
     // ISO 15924 tags of the scripts the cmap covers: all of a few representative letters of the
     // script (e.g. Arab: ا ب ع ي ه) map to glyphs.
     std::vector<std::string> scripts;
+    // Colour: the colour tables bezel reads (color_glyph.hpp's color_tables) and the CPAL palettes.
+    ColorTables color;
+    std::vector<Palette> palettes;
 };
 
 // Reads `file`'s face `face_index` (FreeType for names and metrics, HarfBuzz for the table

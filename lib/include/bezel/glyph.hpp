@@ -13,7 +13,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
+#include "bezel/color_glyph.hpp"
 #include "bezel/expected.hpp"
 #include "bezel/flatten.hpp"
 #include "bezel/font.hpp"
@@ -41,6 +43,17 @@ enum class GlyphBoxMode : std::uint8_t {
 // one, pixels: the flattening error a fill already has (kDefaultRasterTolerancePx), so the
 // dilation adds no error of a larger order than the rasterizer's own.
 inline constexpr double kSyntheticBoldTolerancePx = kDefaultRasterTolerancePx;
+
+// Colour glyphs (bezel/color_glyph.hpp): which form of a glyph is drawn, with which colours.
+struct GlyphColorOptions {
+    // A glyph the font colours (COLRv1, COLRv0, a CBDT or sbix bitmap) is drawn in colour
+    // (GlyphBox::color). False: every glyph is its outline's coverage mask, as before colour
+    // (a COLR base glyph's own outline, often empty; a bitmap-only font's glyphs are errors).
+    bool enabled = true;
+    ColorGlyphOptions palette;            // palette index and custom entries
+    Rgba8 foreground{0, 0, 0, 255};       // COLR palette index 0xFFFF, and draw_rgba's ink
+    BitmapFilter bitmap_filter = BitmapFilter::Box;   // how a bitmap strike is scaled to size
+};
 
 struct GlyphRenderOptions {
     double size_px = 16;
@@ -75,6 +88,11 @@ struct GlyphRenderOptions {
     // offset with |x|, |y| ≤ kMaxGlyphOffsetPx is accepted and moves the box with the ink.
     Vec2 offset_px;
     GlyphBoxMode box = GlyphBoxMode::Tight;
+    // Colour glyphs. A glyph drawn in colour ignores `hinting`, `bold`, `box` (its box is the
+    // tight box of what its paint can ink: paint_bounds, or the scaled bitmap) and the coverage
+    // format (colour is gray anti-aliased); `slant` shears a COLR glyph's paint (a bitmap is not
+    // sheared), and `fill.flatten` flattens the outlines it clips to.
+    GlyphColorOptions color;
     // How the outline is filled: fill rule, overlap mode, flattening, gray or LCD coverage and
     // the LCD order and filter, as for any Rasterizer fill. Accurate overlap is chosen
     // automatically for glyphs that mark overlapping contours (Accumulate here never forces plain
@@ -91,6 +109,9 @@ struct GlyphBox {
     // The overlap mode the glyph is filled with: Accurate when the font marks its contours as
     // overlapping or the options ask for it.
     OverlapMode overlap = OverlapMode::Accumulate;
+    // Drawn in colour (a COLR paint or a bitmap): draw_rgba() gives its pixels, width × height
+    // premultiplied RGBA with no LCD padding; draw() gives its alpha as coverage.
+    bool color = false;
 };
 
 // A glyph loaded and measured for one set of options: prepare() reads the outline from the Font
@@ -100,6 +121,12 @@ struct PreparedGlyph {
     GlyphRenderOptions options;
     GlyphBox box;
     Path path;   // the outline, pixels, y down, pen at the origin (before the offset)
+    // A colour glyph (box.color): its paint graph, mapped into the box by `paint_transform`, or
+    // its bitmap strike, scaled onto the whole box (the strike's box scaled to size_px, its edges
+    // rounded to whole pixels). Shared, immutable.
+    std::shared_ptr<const ColorGlyph> paint;
+    Affine paint_transform;
+    std::shared_ptr<const ColorBitmap> bitmap;
 };
 
 // Rasterizes single glyphs of one Font (borrowed: it must outlive this object) into caller
@@ -116,9 +143,22 @@ public:
     Expected<PreparedGlyph> prepare(GlyphId gid, const GlyphRenderOptions& options);
     // Fills `glyph` into the top-left box.width × box.height corner of `target` (width × 3 bytes
     // in LCD modes), writing every byte of that corner and nothing else. A glyph with an empty
-    // box writes nothing and needs no target. Errors: a target smaller than the box (or without
-    // memory), the Rasterizer's, each naming the glyph.
+    // box writes nothing and needs no target. A colour glyph writes its alpha (each of the three
+    // bytes alike in LCD modes): a toolkit with only a coverage atlas still gets its silhouette.
+    // Errors: a target smaller than the box (or without memory), the Rasterizer's or the
+    // Painter's, each naming the glyph.
     Status draw(const PreparedGlyph& glyph, const MaskView& target);
+    // Draws `glyph` into the top-left box.width × box.height corner of a premultiplied RGBA
+    // target (paint.hpp's RgbaView: bytes R, G, B, A, stride in bytes), writing every pixel of
+    // that corner: a colour glyph in its colours, any other glyph as its gray coverage times
+    // options.color.foreground. Errors as draw(); an LCD glyph that is not colour is one (three
+    // coverages do not fit one alpha).
+    Status draw_rgba(const PreparedGlyph& glyph, const RgbaView& target);
+    // Whether `gid` would be drawn in colour with `options` (GlyphBox::color), without loading it.
+    bool is_color(GlyphId gid, const GlyphColorOptions& options);
+    // The font's colour form of `gid` (color_glyph.hpp), ColorFormat::None at the cost of one flag
+    // test for a font without colour tables. Svg: bezel draws the glyph from its outline.
+    ColorFormat color_format(GlyphId gid);
 
     // prepare()'s box alone.
     Expected<GlyphBox> measure(GlyphId gid, const GlyphRenderOptions& options);
@@ -127,15 +167,23 @@ public:
                               const MaskView& target);
 
 private:
+    Expected<PreparedGlyph> prepare_color(GlyphId gid, ColorFormat format,
+                                          const GlyphRenderOptions& options);
+    Status draw_color_alpha(const PreparedGlyph& glyph, const MaskView& target);
     Font* font_;
     Rasterizer raster_;
+    std::unique_ptr<Painter> painter_;            // made on the first colour glyph
+    std::vector<std::uint8_t> rgba_scratch_;      // draw() of a colour glyph
+    ColorTables tables_;                          // the font's, read once
 };
 
 // A rendered glyph owned by a cache: its box and pixels (rows packed: stride = width, or
-// 3·width in LCD modes).
+// 3·width in LCD modes). A colour glyph (box.color) has its premultiplied RGBA in `rgba` (stride
+// 4·width) and an empty `mask`.
 struct CachedGlyph {
     GlyphBox box;
     ConstMaskView mask;
+    ConstRgbaView rgba;
 };
 
 struct GlyphCacheStats {
@@ -144,7 +192,9 @@ struct GlyphCacheStats {
 };
 
 // Glyph bitmaps keyed by (font id, glyph id, subpixel bins and every option that changes the
-// pixels: size, hinting, slant, bold, box mode and every FillOptions field but the origin),
+// pixels: size, hinting, slant, bold, box mode, every FillOptions field but the origin, and the
+// colour options: enabled, palette, custom entries, bitmap filter; the foreground only for a
+// colour glyph whose paint uses it, so text colours share mask glyphs),
 // rendered once and blended many times. The pen offset is quantized to kSubpixelBins bins per
 // axis. Memory is bounded by max_bytes (least recently used entries are evicted).
 // A pointer from get() stays valid until the next get() or clear().

@@ -239,6 +239,15 @@ void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8
 void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8_t gray,
                      const CoverageCurve& curve);
 
+// The sRGB transfer function (IEC 61966-2-1) exactly as the blend functions above apply it, for
+// the modules that mix colour themselves (the paint module's colour bitmaps and blend_rgba must
+// agree with blend_mask bit for bit). srgb_decode is a table of the exact function rounded to
+// float; srgb_encode quantizes linear light to 1/4095 and returns the byte nearest its encoding,
+// within ±1 byte of the exact one, with srgb_encode(srgb_decode(v)) == v for every byte v. Inputs
+// outside [0, 1] are clamped.
+float srgb_decode(std::uint8_t encoded);
+std::uint8_t srgb_encode(float linear);
+
 // PNG colour layouts for writing.
 enum class PngColor : std::uint8_t { Gray, Rgb, Rgba };
 

@@ -72,6 +72,14 @@ inline constexpr int kMaxPaintDepth = 64;
 // visit: a DAG of depth 64 can reach 2^64 paths, so depth alone does not bound the work. The
 // largest emoji of Noto's and Twitter's COLRv1 sets visit a few hundred.
 inline constexpr std::size_t kMaxPaintNodes = std::size_t{1} << 16;
+// Most colour stops the gradients of one colour glyph may hold in all (a gradient reached twice
+// through shared paint offsets is built twice and counts twice). Each node may name 65535 stops,
+// so the node budget alone would allow 2^32 of them; real gradients hold two to a dozen.
+inline constexpr std::size_t kMaxPaintColorStops = std::size_t{1} << 16;
+// Most outline points the PaintGlyph outlines of one colour glyph may hold in all (each glyph's
+// outline is loaded once): 2^22 points, 64 MiB of Path. A COLR graph can name every glyph of the
+// font; emoji hold a few thousand points.
+inline constexpr std::size_t kMaxPaintOutlinePoints = std::size_t{1} << 22;
 // Most bytes of one colour bitmap strike image (CBDT/sbix PNG) decoded: a 4096 × 4096 RGBA
 // image. Emoji strikes are 136 or 160 px; a PNG declaring more is refused before it is decoded.
 inline constexpr std::size_t kMaxColorBitmapBytes = std::size_t{64} << 20;

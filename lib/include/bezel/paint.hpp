@@ -11,10 +11,15 @@
 //
 // Colour space: painting follows the COLR specification, which takes its compositing from W3C
 // Compositing and Blending Level 1 on sRGB-ENCODED values, as Skia (Chromium's COLRv1 renderer)
-// does: every layer is premultiplied RGBA in sRGB-encoded values, gradients interpolate between
-// stops in that space, and the anti-aliased coverage of a PaintGlyph clip multiplies a layer's
-// premultiplied colour. (bezel's page blending is linear light, image.hpp; a finished colour glyph
-// is one more piece of ink on the page.)
+// does: every layer is premultiplied RGBA in sRGB-encoded values, and the anti-aliased coverage
+// of a PaintGlyph clip multiplies a layer's premultiplied colour. (bezel's page blending is
+// linear light, image.hpp; a finished colour glyph is one more piece of ink on the page.)
+// Gradients interpolate the STRAIGHT (unpremultiplied) sRGB-encoded colour and alpha between two
+// stops and premultiply the result, as Skia does for COLRv1 (its FreeType port makes each colour
+// line an SkGradientShader without kInterpolateColorsInPremul_Flag): bezel is checked against
+// Chromium's rendering. The CPAL section of the specification asks for interpolation of
+// premultiplied linear-light values instead, which differs between stops of different alpha
+// (premultiplied) and between distinct colours (linear light): docs/colour.md compares them.
 //
 // Threading: a Painter holds scratch memory; one Painter must not be used from two threads at once.
 #pragma once
@@ -182,7 +187,8 @@ struct ColorGlyph {
 Status validate(const ColorGlyph& glyph);
 
 // The glyph-space box the graph can ink: its clip box when it has one, else the union of the
-// boxes of the outlines its PaintGlyph nodes reach, each mapped by the transforms above it; empty
+// boxes of the outlines its PaintGlyph nodes reach, each mapped by the transforms above it (and
+// narrowed to the clip boxes of the PaintColrGlyph nodes above it); empty
 // when nothing can be inked. A graph that validate() refuses has an empty box.
 Rect paint_bounds(const ColorGlyph& glyph);
 
@@ -194,7 +200,11 @@ struct PaintOptions {
 };
 
 // Paints colour glyphs. Allocates nothing once its scratch (a few float RGBA layers of the target's
-// size, bounded by the graph's depth) has grown to the largest target and graph used.
+// size, two per level of nested PaintComposite, and a float coverage mask per level of nested clip,
+// all bounded by the graph's depth) has grown to the largest target and graph used.
+// A fill outside every PaintGlyph and clip box (the specification forbids it: "bounded layers
+// only") covers the whole target. A subtree whose transform collapses the plane (determinant 0)
+// paints nothing.
 class Painter {
 public:
     Painter();

@@ -41,6 +41,13 @@ struct TextRenderOptions {
     // that mix encoded values draw it, in both polarities; TextRendering::Linear for the exact
     // linear-light mix (compositing, measuring). One curve per render, from the two colours.
     CoverageCurveOptions coverage;
+    // Colour glyphs (glyph.hpp): drawn in colour by default, with palette 0; `color.foreground`
+    // is ignored (`foreground` above is the text colour a COLR glyph's 0xFFFF entries take). A
+    // colour glyph is composited onto the page "over" in linear light (paint.hpp's blend_rgba),
+    // not through the coverage curve, and is gray anti-aliased in LCD text. With
+    // `color.enabled` false every glyph is a mask in the foreground colour, and fallback takes
+    // only fonts with outlines.
+    GlyphColorOptions color;
 };
 
 // Receives the rows of a page that are finished while the rest is still drawn
@@ -62,8 +69,7 @@ public:
     static Expected<TextRenderer> open(const std::string& file, int face_index = 0,
                                        std::size_t cache_bytes = kDefaultGlyphCacheBytes);
     // A list of fonts, text drawn with fallback (layout.hpp's layout_text over a collection).
-    // Errors: a bitmap-only font in the list, naming it. The collection is set to take only
-    // fonts with outlines from its fallback source (FontCollection::set_outlines_only).
+    // A bitmap-only colour font (CBDT, sbix) may be in the list: its glyphs are drawn in colour.
     static Expected<TextRenderer> open(FontCollection fonts,
                                        std::size_t cache_bytes = kDefaultGlyphCacheBytes);
     TextRenderer(TextRenderer&&) noexcept;
@@ -79,6 +85,15 @@ public:
     // The .notdef glyphs (characters the font does not map) of the last render, render_gray or
     // render_gray_streaming call that got as far as laying out the text; all zero before.
     const MissingGlyphs& missing_glyphs() const;
+    // Whether the text of the last call holds a glyph drawn in colour. render_gray and
+    // render_gray_streaming refuse such text with an Error, after laying it out and before
+    // drawing or sizing anything (one gray byte a pixel cannot show colour), and this is then
+    // true: the caller draws the page with render() instead (`bezel render` writes such a page as
+    // RGB or RGBA where its text would have been gray).
+    bool last_text_has_color() const;
+    // How many glyphs of the last call's text the font has only as SVG colour glyphs, which bezel
+    // does not paint: they were drawn from their outlines (or as .notdef). 0 before any call.
+    std::size_t last_text_svg_glyphs() const;
 
     // ShapeOptions::variations apply to the first font (layout.hpp).
     // Shapes, lays out and draws `utf8` onto a new image sized to the layout (RGBA: background
@@ -104,7 +119,8 @@ private:
     struct Impl;
     template <typename Page, typename MakePage, typename Blend>
     Status draw(std::string_view utf8, const TextRenderOptions& options, Page& page,
-                MakePage&& make_page, Blend&& blend, PageRowsSink* rows_sink = nullptr);
+                MakePage&& make_page, Blend&& blend, bool gray_page,
+                PageRowsSink* rows_sink = nullptr);
     Status draw_gray(std::string_view utf8, const TextRenderOptions& options, Mask& page,
                      PageRowsSink* rows_sink);
     explicit TextRenderer(std::unique_ptr<Impl> impl);

@@ -11,6 +11,7 @@
 #include FT_FREETYPE_H
 
 #include "bezel/font.hpp"
+#include "font/colr_table.hpp"
 
 namespace bezel {
 
@@ -62,6 +63,15 @@ struct Font::Impl {
     // run of glyphs at one size sets it once.
     FT_F26Dot6 char_size_26_6 = 0;
     font_detail::FreeTypeRenderCache render_cache;
+    // The COLR table, read and checked on first use by color_glyph.cpp (it does not change with
+    // variations); `colr` null after that means the font has none, or `colr_error` says why not.
+    bool colr_read = false;
+    std::unique_ptr<font_detail::ColrTable> colr;
+    std::string colr_error;
+    // A second size object for colour bitmap strikes (FT_Select_Size), so that selecting a strike
+    // leaves the face's own size — char_size_26_6, the hinted loads' — untouched. Owned by the
+    // face (FT_Done_Face frees it); null until the first colour bitmap.
+    FT_Size strike_size = nullptr;
 };
 
 namespace font_detail {

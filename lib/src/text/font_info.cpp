@@ -101,6 +101,8 @@ Expected<FontInfo> font_info(const std::string& file, int face_index) {
     info.glyph_count = font->glyph_count();
     info.metrics = font->metrics();
     info.axes = font->axes();
+    info.color = color_tables(*font);
+    info.palettes = palettes(*font);
     for (const ScriptProbe& probe : kScriptProbes) {
         bool covered = true;
         for (char32_t c : probe.letters)

@@ -36,6 +36,9 @@ struct Key {
     std::uint8_t bin_x, bin_y, coverage, rule_overlap;   // coverage: format and LCD order
     std::uint8_t outline_box;   // hinting (2 bits), box mode (1) and flattening method (2)
     std::array<std::uint8_t, 5> lcd_filter;
+    std::uint8_t color_mode;    // colour enabled (1 bit) and bitmap filter (1)
+    std::int32_t palette;
+    std::uint64_t custom_palette;   // a hash of the custom entries (0: none)
 
     bool operator==(const Key& o) const {
         return font_id == o.font_id && size_bits == o.size_bits &&
@@ -43,7 +46,8 @@ struct Key {
                slant_bits == o.slant_bits && bold_bits == o.bold_bits &&
                gid == o.gid && bin_x == o.bin_x && bin_y == o.bin_y && coverage == o.coverage &&
                rule_overlap == o.rule_overlap && outline_box == o.outline_box &&
-               lcd_filter == o.lcd_filter;
+               lcd_filter == o.lcd_filter && color_mode == o.color_mode &&
+               palette == o.palette && custom_palette == o.custom_palette;
     }
 };
 
@@ -72,8 +76,29 @@ std::uint64_t hash_key(const Key& k) {
     std::uint64_t filter = k.outline_box;
     for (std::uint8_t tap : k.lcd_filter) filter = filter << 8 | tap;
     h = mix(h ^ filter);
+    h = mix(h ^ (std::uint64_t{k.color_mode} << 32 | static_cast<std::uint32_t>(k.palette)));
+    h = mix(h ^ k.custom_palette);
     return mix(h ^ (std::uint64_t{k.gid} << 32 | std::uint64_t{k.bin_x} << 24 |
                     std::uint64_t{k.bin_y} << 16 | std::uint64_t{k.coverage} << 8 | k.rule_overlap));
+}
+
+// The custom palette entries as one number for the key: FNV-1a over index and colour, so two
+// lists of the same entries hash alike only when they are the same list (order counts, as the
+// later of two entries for one index wins).
+std::uint64_t custom_palette_hash(const std::vector<ColorGlyphOptions::Entry>& entries) {
+    if (entries.empty()) return 0;
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    for (const ColorGlyphOptions::Entry& e : entries) {
+        const std::uint64_t v = std::uint64_t{static_cast<std::uint32_t>(e.index)} << 32 |
+                                std::uint64_t{e.color.r} << 24 | std::uint64_t{e.color.g} << 16 |
+                                std::uint64_t{e.color.b} << 8 | e.color.a;
+        for (int i = 0; i < 8; ++i) h = (h ^ ((v >> (8 * i)) & 0xff)) * 0x100000001b3ULL;
+    }
+    return h | 1;   // never 0, the key of no custom entries
+}
+
+std::uint32_t rgba_bits(Rgba8 c) {
+    return std::uint32_t{c.r} << 24 | std::uint32_t{c.g} << 16 | std::uint32_t{c.b} << 8 | c.a;
 }
 
 // floor(v · bins) for v in [0, 1); anything else (NaN, out of range) → bin 0.
@@ -82,12 +107,37 @@ std::uint8_t bin_of(double v) {
     return static_cast<std::uint8_t>(std::min(kSubpixelBins - 1, static_cast<int>(v * kSubpixelBins)));
 }
 
+// Draws a prepared glyph into `pixels` (rows packed, `row_bytes` each): RGBA for a colour glyph,
+// coverage otherwise.
+Expected<CachedGlyph> draw_into(GlyphRasterizer& rasterizer, const PreparedGlyph& glyph,
+                                std::uint8_t* pixels, int row_bytes) {
+    const GlyphBox& box = glyph.box;
+    CachedGlyph out;
+    out.box = box;
+    if (box.color) {
+        const RgbaView view{pixels, box.width, box.height, row_bytes};
+        if (Status drawn = rasterizer.draw_rgba(glyph, view); !drawn) return drawn.error();
+        out.rgba = view;
+        out.mask = {nullptr, 0, 0, 0};
+    } else {
+        const MaskView view{pixels, row_bytes, box.height, row_bytes};
+        if (Status drawn = rasterizer.draw(glyph, view); !drawn) return drawn.error();
+        out.mask = view;
+    }
+    return out;
+}
+
 }  // namespace
 
 struct GlyphCache::Impl {
     struct Slot {
         Key key{};
         CachedGlyph glyph;
+        // A colour glyph painted with the text colour (palette index 0xFFFF): the foreground it
+        // was painted with, checked on every hit (the key leaves the foreground out, so mask
+        // glyphs and other colour glyphs are shared by every text colour).
+        bool uses_foreground = false;
+        std::uint32_t foreground = 0;
         std::vector<std::uint8_t> pixels;
         std::int32_t prev = kNone, next = kNone;   // LRU list (head = most recent) or free list
     };
@@ -216,16 +266,29 @@ Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::u
                   static_cast<std::uint8_t>(static_cast<int>(o.hinting) |
                                             static_cast<int>(o.box) << 2 |
                                             static_cast<int>(f.flatten.method) << 3),
-                  f.lcd_filter.taps};
+                  f.lcd_filter.taps,
+                  static_cast<std::uint8_t>(static_cast<int>(o.color.enabled) |
+                                            static_cast<int>(o.color.bitmap_filter) << 1),
+                  o.color.palette.palette,
+                  custom_palette_hash(o.color.palette.custom)};
+    const std::uint32_t foreground = rgba_bits(o.color.foreground);
 
     if (std::size_t pos = c.find_pos(key); pos != SIZE_MAX) {
         std::int32_t s = c.table[pos];
-        if (s != c.head) {
-            c.unlink(s);
-            c.push_front(s);
+        if (!c.at(s).uses_foreground || c.at(s).foreground == foreground) {
+            if (s != c.head) {
+                c.unlink(s);
+                c.push_front(s);
+            }
+            ++c.stats.hits;
+            return &c.at(s).glyph;
         }
-        ++c.stats.hits;
-        return &c.at(s).glyph;
+        // Painted in another text colour: dropped, and painted again below.
+        c.unlink(s);
+        c.table_erase(pos);
+        c.stats.bytes -= c.slot_bytes(c.at(s));
+        --c.stats.entries;
+        c.release(s);
     }
     ++c.stats.misses;
 
@@ -233,14 +296,14 @@ Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::u
     auto glyph = rasterizer.prepare(gid, o);
     if (!glyph) return glyph.error();
     const GlyphBox& box = glyph->box;
-    const int row_bytes = box.width * (f.format == CoverageFormat::Lcd ? 3 : 1);
+    const int row_bytes = box.width * (box.color ? 4 : f.format == CoverageFormat::Lcd ? 3 : 1);
     const std::size_t need = static_cast<std::size_t>(row_bytes) * static_cast<std::size_t>(box.height);
 
     if (need + kEntryOverheadBytes > c.max_bytes) {
         c.oversized.resize(need);
-        MaskView view{c.oversized.data(), row_bytes, box.height, row_bytes};
-        if (Status drawn = rasterizer.draw(*glyph, view); !drawn) return drawn.error();
-        c.oversized_glyph = {box, ConstMaskView(view)};
+        auto drawn = draw_into(rasterizer, *glyph, c.oversized.data(), row_bytes);
+        if (!drawn) return drawn.error();
+        c.oversized_glyph = *drawn;
         return &c.oversized_glyph;
     }
 
@@ -263,13 +326,15 @@ Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::u
     slot.pixels.resize(need);
     if (slot.pixels.capacity() + kEntryOverheadBytes + c.stats.bytes > c.max_bytes)
         slot.pixels.shrink_to_fit();   // a reused buffer much larger than needed
-    MaskView view{slot.pixels.data(), row_bytes, box.height, row_bytes};
-    if (Status drawn = rasterizer.draw(*glyph, view); !drawn) {
+    auto drawn = draw_into(rasterizer, *glyph, slot.pixels.data(), row_bytes);
+    if (!drawn) {
         c.release(s);
         return drawn.error();
     }
     slot.key = key;
-    slot.glyph = {box, ConstMaskView(view)};
+    slot.glyph = *drawn;
+    slot.uses_foreground = glyph->paint && glyph->paint->uses_foreground;
+    slot.foreground = foreground;
     c.table_insert(s);
     c.push_front(s);
     c.stats.bytes += c.slot_bytes(slot);

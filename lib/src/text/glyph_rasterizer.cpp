@@ -103,10 +103,17 @@ Status freetype_box(GlyphId gid, const Rect& b, const GlyphRenderOptions& o, Gly
 
 }  // namespace
 
-GlyphRasterizer::GlyphRasterizer(Font& font) : font_(&font) {}
+GlyphRasterizer::GlyphRasterizer(Font& font) : font_(&font), tables_(color_tables(font)) {}
 
 Expected<PreparedGlyph> GlyphRasterizer::prepare(GlyphId gid, const GlyphRenderOptions& options) {
     if (auto ok = check_options(gid, options); !ok) return ok.error();
+    // Fonts without colour tables (most) pay one flag test for colour.
+    if (options.color.enabled && tables_.any()) {
+        const ColorFormat format = color_format(gid);
+        if (format == ColorFormat::ColrV1 || format == ColorFormat::ColrV0 ||
+            format == ColorFormat::Bitmap)
+            return prepare_color(gid, format, options);
+    }
     auto outline = font_->outline(gid, {options.size_px, options.hinting});
     if (!outline) return outline.error();
     PreparedGlyph glyph;
@@ -159,6 +166,7 @@ Status GlyphRasterizer::draw(const PreparedGlyph& glyph, const MaskView& target)
                      std::to_string(target.height) + " is smaller than the glyph's " +
                      std::to_string(box.width * bytes_per_px) + "x" + std::to_string(box.height) +
                      " bytes"};
+    if (box.color) return draw_color_alpha(glyph, target);
     const Affine to_bitmap =
         Affine::translate({o.offset_px.x - box.left, o.offset_px.y + box.top});
     const MaskView corner = target.sub(0, 0, box.width * bytes_per_px, box.height);
@@ -167,6 +175,25 @@ Status GlyphRasterizer::draw(const PreparedGlyph& glyph, const MaskView& target)
     // The one place glyphs meet the Rasterizer.
     Status filled = raster_.fill_path(glyph.path, to_bitmap, corner, fill);
     if (!filled) return Error{glyph_label(glyph.gid) + ": " + filled.error().message};
+    return ok_status();
+}
+
+// A colour glyph's alpha as coverage: painted into scratch RGBA, the A byte kept (three times in
+// LCD modes, where the target has three bytes a pixel).
+Status GlyphRasterizer::draw_color_alpha(const PreparedGlyph& glyph, const MaskView& target) {
+    const GlyphBox& box = glyph.box;
+    const std::size_t row_bytes = 4 * static_cast<std::size_t>(box.width);
+    rgba_scratch_.resize(row_bytes * static_cast<std::size_t>(box.height));
+    const RgbaView rgba{rgba_scratch_.data(), box.width, box.height,
+                        static_cast<std::ptrdiff_t>(row_bytes)};
+    if (Status drawn = draw_rgba(glyph, rgba); !drawn) return drawn;
+    const int repeat = is_lcd(glyph.options) ? 3 : 1;
+    for (int y = 0; y < box.height; ++y) {
+        std::uint8_t* out = target.row(y);
+        const std::uint8_t* in = rgba.row(y);
+        for (int x = 0; x < box.width; ++x)
+            for (int k = 0; k < repeat; ++k) *out++ = in[4 * x + 3];
+    }
     return ok_status();
 }
 

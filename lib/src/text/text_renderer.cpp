@@ -71,6 +71,8 @@ struct TextRenderer::Impl {
     std::vector<FontSlot> slots;   // one per font of `fonts`, grown as fallback adds fonts
     GlyphCache cache;
     MissingGlyphs missing;   // of the last draw
+    bool has_color = false;  // of the last draw
+    std::size_t svg_glyphs = 0;   // of the last draw
     std::vector<VariationSetting> wanted;   // scratch
 
     Impl(FontCollection f, std::size_t cache_bytes) : fonts(std::move(f)), cache(cache_bytes) {}
@@ -114,9 +116,6 @@ Expected<TextRenderer> TextRenderer::open(const std::string& file, int face_inde
 }
 
 Expected<TextRenderer> TextRenderer::open(FontCollection fonts, std::size_t cache_bytes) {
-    for (std::size_t i = 0; i < fonts.size(); ++i)
-        if (Status s = fonts.font(i).require_outlines(); !s) return s.error();
-    fonts.set_outlines_only(true);
     return TextRenderer(std::make_unique<Impl>(std::move(fonts), cache_bytes));
 }
 
@@ -125,21 +124,38 @@ Shaper& TextRenderer::shaper() { return impl_->fonts.shaper(0); }
 FontCollection& TextRenderer::fonts() { return impl_->fonts; }
 GlyphCache& TextRenderer::cache() { return impl_->cache; }
 const MissingGlyphs& TextRenderer::missing_glyphs() const { return impl_->missing; }
+bool TextRenderer::last_text_has_color() const { return impl_->has_color; }
+std::size_t TextRenderer::last_text_svg_glyphs() const { return impl_->svg_glyphs; }
 
 // Shapes and lays out `utf8`, makes the page with make_page(width, height), then hands each
-// placed glyph's cached mask and its top-left pixel to blend(page, mask, x, y). One loop for the
-// RGBA and the gray page.
+// placed glyph's cached glyph and its top-left pixel to blend(page, glyph, x, y). One loop for the
+// RGBA and the gray page; a gray page refuses text with colour glyphs before it is made.
 template <typename Page, typename MakePage, typename Blend>
 Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& options, Page& page,
-                          MakePage&& make_page, Blend&& blend, PageRowsSink* rows_sink) {
+                          MakePage&& make_page, Blend&& blend, bool gray_page,
+                          PageRowsSink* rows_sink) {
     Impl& r = *impl_;
+    // A bitmap-only colour font drawn without colour would have no glyphs at all.
+    r.fonts.set_outlines_only(!options.color.enabled);
     if (auto ok = r.prepare_fonts(options.shape); !ok) return ok;
     r.missing = MissingGlyphs{};
+    r.has_color = false;
+    r.svg_glyphs = 0;
     auto layout = layout_text(r.fonts, utf8, options.shape, options.layout);
     if (!layout) return layout.error();
     r.missing = find_missing_glyphs(*layout, utf8);
     // Fonts the fallback added while laying out.
     if (auto ok = r.prepare_fonts(options.shape); !ok) return ok;
+    for (const PlacedGlyph& g : layout->glyphs) {
+        const ColorFormat format = r.slots[g.font].rasterizer->color_format(g.gid);
+        if (format == ColorFormat::Svg) ++r.svg_glyphs;
+        if (format == ColorFormat::ColrV1 || format == ColorFormat::ColrV0 ||
+            format == ColorFormat::Bitmap)
+            r.has_color = r.has_color || options.color.enabled;
+    }
+    if (gray_page && r.has_color)
+        return Error{"render_gray: the text holds colour glyphs, which a gray page cannot show "
+                     "(render() draws it in RGBA)"};
 
     const double w = std::ceil(layout->width_px), h = std::ceil(layout->height_px);
     if (!(w <= kMaxImageDim && h <= kMaxImageDim && w * h <= kMaxPagePixels))
@@ -157,6 +173,8 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     glyph.hinting = options.hinting;
     glyph.slant = options.slant;
     glyph.bold = options.shape.bold;   // the layout's advances were widened by the same value
+    glyph.color = options.color;
+    glyph.color.foreground = options.foreground;
     const bool whole_pixel_pen = hints_horizontally(options.hinting);
     const bool subpixel_y = options.hinting == Hinting::None &&
                             (options.shape.direction == Direction::TopToBottom ||
@@ -205,7 +223,7 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
         int x = 0, y = 0;
         auto c = look_up(glyphs[i], x, y);
         if (!c) return c.error();
-        if (*c != nullptr) blend(page, (*c)->mask, x, y);
+        if (*c != nullptr) blend(page, **c, x, y);
         if (rows_sink != nullptr && first_row[i + 1] > reported) {
             reported = first_row[i + 1];
             rows_sink->rows_final(reported);
@@ -225,14 +243,17 @@ Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOpti
     Image out;
     auto drawn = draw<Image>(
         utf8, options, out, [&](int w, int h) { return Image(w, h, options.background); },
-        [&](Image& onto, ConstMaskView mask, int x, int y) {
-            if (options.format == CoverageFormat::Gray)
-                blend_mask(onto, mask, x, y, options.foreground, *curve);
+        [&](Image& onto, const CachedGlyph& glyph, int x, int y) {
+            if (glyph.box.color)
+                blend_rgba(onto, glyph.rgba, x, y);
+            else if (options.format == CoverageFormat::Gray)
+                blend_mask(onto, glyph.mask, x, y, options.foreground, *curve);
             else
                 // LCD coverage is stored R, G, B per pixel whatever the panel's order (a BGR
                 // panel's samples are reversed by the fill), so the bytes are RGB here.
-                blend_lcd_mask(onto, mask, x, y, options.foreground, LcdOrder::Rgb, *curve);
-        });
+                blend_lcd_mask(onto, glyph.mask, x, y, options.foreground, LcdOrder::Rgb, *curve);
+        },
+        false);
     if (!drawn) return drawn.error();
     return out;
 }
@@ -263,10 +284,10 @@ Status TextRenderer::draw_gray(std::string_view utf8, const TextRenderOptions& o
         utf8, options, page,
         // The paper's byte written once (a zeroed page then filled would write it twice).
         [&](int w, int h) { return Mask(w, h, bg.r); },
-        [&](Mask& onto, ConstMaskView mask, int x, int y) {
-            blend_mask_gray(onto.view(), mask, x, y, fg.r, *curve);
+        [&](Mask& onto, const CachedGlyph& glyph, int x, int y) {
+            blend_mask_gray(onto.view(), glyph.mask, x, y, fg.r, *curve);
         },
-        rows_sink);
+        true, rows_sink);
 }
 
 }  // namespace bezel
