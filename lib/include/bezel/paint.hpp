@@ -91,6 +91,7 @@ struct ColorStop {
     PaintColor color;
 };
 // Stops sorted by offset (stable: equal offsets keep their order, a hard edge). At least one stop.
+// Repeat and Reflect of a span of zero length (every stop at one offset) paint nothing.
 struct ColorLine {
     Extend extend = Extend::Pad;
     std::vector<ColorStop> stops;

@@ -38,6 +38,14 @@ double extend(const ColorLine& line, double t) {
     return first + m * span;
 }
 
+// A colour line that repeats or reflects a span of zero length (every stop at one offset) has no
+// period to repeat: it paints nothing, as the specification says of a sweep whose start and end
+// angles are equal (and as Skia draws it). Pad extends its end colours either way.
+bool repeats_nothing(const ColorLine& line) {
+    return line.extend != Extend::Pad &&
+           !(line.stops.back().offset - line.stops.front().offset > 0.0f);
+}
+
 }  // namespace
 
 Pixel color_line_at(const ColorLine& line, double t, const Rgba8& foreground) {
@@ -67,7 +75,7 @@ Gradient::Gradient(const PaintLinearGradient& g) : kind_(Kind::Linear), line_(&g
     const Vec2 d1 = g.p1 - g.p0, d2 = g.p2 - g.p0;
     const Vec2 n = d2.perp();
     p0_ = g.p0;
-    if (d1.cross(d2) == 0.0 || n.length_squared() == 0.0) {
+    if (repeats_nothing(g.line) || d1.cross(d2) == 0.0 || n.length_squared() == 0.0) {
         paints_ = false;
         return;
     }
@@ -93,7 +101,7 @@ Gradient::Gradient(const PaintRadialGradient& g) : kind_(Kind::Radial), line_(&g
     dr_ = g.r1 - g.r0;
     a_ = cd_.length_squared() - dr_ * dr_;
     // Equal circles: no t is defined (canvas paints nothing).
-    if (cd_.length_squared() == 0.0 && dr_ == 0.0) paints_ = false;
+    if (repeats_nothing(g.line) || (cd_.length_squared() == 0.0 && dr_ == 0.0)) paints_ = false;
     // a within rounding of 0 relative to its terms: the linear case.
     linear_equation_ = std::fabs(a_) <= 1e-12 * (cd_.length_squared() + dr_ * dr_);
 }
@@ -104,7 +112,8 @@ Gradient::Gradient(const PaintSweepGradient& g) : kind_(Kind::Sweep), line_(&g.l
     p0_ = g.center;
     start_deg_ = g.start_deg;
     end_deg_ = g.end_deg;
-    if (start_deg_ == end_deg_ && g.line.extend != Extend::Pad) paints_ = false;
+    if (repeats_nothing(g.line) || (start_deg_ == end_deg_ && g.line.extend != Extend::Pad))
+        paints_ = false;
 }
 
 bool Gradient::t_at(Point p, double& t) const {

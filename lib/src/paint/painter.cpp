@@ -189,6 +189,9 @@ struct Painter::Impl {
             float* m = mask(mask_level);
             FillOptions fo;
             fo.flatten = flatten;
+            // The union of the contours, whatever their winding: colour glyphs build shapes from
+            // pieces that abut with opposite windings, where plain accumulation leaves a seam.
+            fo.overlap = OverlapMode::Accurate;
             fo.origin = {-static_cast<double>(box.x0), -static_cast<double>(box.y0)};
             const FloatMaskView view{m + at(box.x0, box.y0), box.x1 - box.x0, box.y1 - box.y0, w};
             Status s = raster.fill_path(outline, ctm, view, fo);
