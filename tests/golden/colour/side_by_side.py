@@ -25,7 +25,7 @@ GLYPHS = [
     ("test_glyphs-glyf_colr_1", "linear_gradient_extend_mode_reflect"),
     ("test_glyphs-glyf_colr_1", "radial_contained_gradient_extend_mode_repeat"),
     ("test_glyphs-glyf_colr_1", "radial_horizontal_gradient_extend_mode_reflect"),
-    ("test_glyphs-glyf_colr_1", "sweep_-180_540_reflect_wide"),
+    ("test_glyphs-glyf_colr_1", "sweep_0_360_reflect_narrow"),
     ("test_glyphs-glyf_colr_1", "gradient_p2_skewed"),
     ("test_glyphs-glyf_colr_1", "composite_HSL_HUE"),
     ("test_glyphs-glyf_colr_1", "foreground_color_radial_alpha_0.3"),
