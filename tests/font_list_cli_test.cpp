@@ -218,10 +218,6 @@ TEST(FontListCli, BadListsAreClearErrors) {
           "out.png"},
          2,
          "an empty font name"},
-        {{"glyph", "--font", kCantarell, "--font", kFonts + "/noto-color-emoji/NotoColorEmoji-subset.ttf",
-          "--char", "a"},
-         1,
-         "bitmap-only"},
         {{"info", "--font", kCantarell, "--fallback", kArabic}, 2, "go with --coverage"},
     };
     for (const Case& c : cases) {

@@ -92,7 +92,8 @@ TEST_F(InfoCli, JsonMatchesTheFontThroughTheLibrary) {
     EXPECT_EQ(keys, (std::vector<std::string>{
                         "file", "face_index", "face_count", "family", "style", "postscript_name",
                         "version", "glyph_count", "units_per_em", "outline_format", "ascender",
-                        "descender", "line_gap", "axes", "named_instances", "tables", "scripts"}));
+                        "descender", "line_gap", "axes", "named_instances", "tables", "scripts",
+                        "color"}));
 }
 
 TEST_F(InfoCli, VariableFaceOfACollectionListsAxesAndInstances) {

@@ -145,10 +145,11 @@ public:
     // The face has colour glyphs of any kind (FreeType's FT_HAS_COLOR: COLR with CPAL, CBDT,
     // sbix); bezel/color_glyph.hpp's color_tables() says which, and draws them.
     bool has_color_bitmaps() const;
-    // ok when the face has outlines, which is all bezel draws; for a bitmap-only face (colour
-    // emoji, EBDT, BDF) an Error naming the file: "NotoColorEmoji.ttf: a bitmap-only font (no
-    // outlines); colour bitmap fonts are not supported yet". Every outline call fails with it;
-    // the colour glyphs of such a font are read with load_color_bitmap (bezel/color_glyph.hpp).
+    // ok when the face has outlines; for a bitmap-only face (colour emoji, EBDT, BDF) an Error
+    // naming the file: "NotoColorEmoji.ttf: a bitmap-only font (no outlines): its glyphs are
+    // colour bitmaps, drawn only as colour glyphs", or for a monochrome bitmap font "...;
+    // monochrome bitmap fonts are not supported". Every outline call fails with it; the colour
+    // glyphs of such a font are read with load_color_bitmap (bezel/color_glyph.hpp).
     Status require_outlines() const;
 
     // For a bitmap-only sfnt, units per em, ascender, descender and line gap come from its head

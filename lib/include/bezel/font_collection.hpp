@@ -81,9 +81,10 @@ public:
     // A colour font (COLR, CBDT, sbix): preferred for emoji presentation.
     bool is_colour(std::size_t i) const;
 
-    // The font for one character or cluster outside text layout (a glyph, an atlas entry): the
-    // first font of the list that covers it, else the fallback source's (appended), else
-    // nullopt.
+    // The font for one character or cluster outside text layout (a glyph, an atlas entry): the one
+    // layout would draw it with (its rule, text.md's "Font fallback": an emoji takes the first
+    // colour font that covers it, otherwise the first font that covers it, else the fallback
+    // source's, appended), or nullopt when none covers it.
     std::optional<std::size_t> font_for(const std::u32string& cluster);
 
     // The fallback source's font for a cluster no font of the list covers: asks the source,

@@ -153,9 +153,11 @@ bool Font::has_color_bitmaps() const { return FT_HAS_COLOR(impl_->face.get()); }
 
 Status Font::require_outlines() const {
     if (is_scalable() && impl_->face->units_per_EM != 0) return ok_status();
-    return Error{impl_->file + ": a bitmap-only font (no outlines); " +
-                 (has_color_bitmaps() ? "colour bitmap" : "bitmap") +
-                 " fonts are not supported yet"};
+    if (has_color_bitmaps())
+        return Error{impl_->file + ": a bitmap-only font (no outlines): its glyphs are colour "
+                     "bitmaps, drawn only as colour glyphs"};
+    return Error{impl_->file + ": a bitmap-only font (no outlines); monochrome bitmap fonts are "
+                 "not supported"};
 }
 
 std::optional<GlyphId> Font::glyph_for_char(char32_t code_point) const {

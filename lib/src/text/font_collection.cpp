@@ -1,6 +1,7 @@
 // FontCollection: fonts opened once per face, in list order, plus the ones a fallback source
 // adds.
 #include "bezel/font_collection.hpp"
+#include "text/layout_fonts.hpp"
 
 #include <utility>
 
@@ -127,6 +128,15 @@ bool FontCollection::covers(std::size_t i, const char32_t* cluster, std::size_t 
 }
 
 std::optional<std::size_t> FontCollection::font_for(const std::u32string& cluster) {
+    // Layout's own choice, so a glyph or an atlas entry comes from the font a page would draw it
+    // with (an emoji from the colour font); it gives the first font when nothing covers it.
+    text_detail::CollectionFonts fonts(*this);
+    text_detail::UnicodeBreaks breaks;
+    std::vector<std::uint16_t> chosen;
+    if (fonts.assign(cluster.data(), cluster.size(), breaks, chosen) && !chosen.empty() &&
+        covers(chosen[0], cluster.data(), cluster.size()))
+        return chosen[0];
+    // ICU could not find the clusters: the first font that covers it, then the fallback's.
     for (std::size_t i = 0; i < size(); ++i)
         if (covers(i, cluster.data(), cluster.size())) return i;
     FallbackRequest request;
