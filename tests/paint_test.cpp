@@ -415,6 +415,32 @@ TEST(Paint, SweepGradientRunsCounterClockwiseInGlyphSpace) {
     EXPECT_LT(t.at(38, 19)[2], 15);
 }
 
+// Every stop at one offset (test_glyphs-glyf_colr_1's sweep_coincident_stops_*): repeating or
+// reflecting a span of zero length has no period, so nothing is painted (Chromium draws nothing
+// there too); Pad still paints the first stop's colour below the offset and the last one's above.
+TEST(Paint, ZeroSpanColourLineThatRepeatsOrReflectsPaintsNothing) {
+    const int w = 20, h = 20;
+    for (Extend e : {Extend::Pad, Extend::Repeat, Extend::Reflect}) {
+        const ColorLine l = line(e, {{0.5f, kRed}, {0.5f, kBlue}});
+        const std::vector<PaintNode> gradients = {
+            PaintLinearGradient{l, {0, 0}, {20, 0}, {0, 10}},
+            PaintRadialGradient{l, {10, 10}, {10, 10}, 0, 12},
+            PaintSweepGradient{l, {10, 10}, 45, 90},
+        };
+        for (const PaintNode& node : gradients) {
+            const Target t = paint(single(node), w, h, flip(h));
+            int inked = 0;
+            for (int y = 0; y < h; ++y)
+                for (int x = 0; x < w; ++x) inked += t.at(x, y)[3] != 0;
+            if (e == Extend::Pad) {
+                EXPECT_EQ(inked, w * h) << "pad, node kind " << node.index();
+            } else {
+                EXPECT_EQ(inked, 0) << "repeat/reflect, node kind " << node.index();
+            }
+        }
+    }
+}
+
 // --- Clips and transforms ---------------------------------------------------------------------------
 TEST(Paint, GlyphClipIsTheRasterizersCoverageTimesTheColour) {
     const int w = 24, h = 24;
@@ -461,6 +487,30 @@ TEST(Paint, AbuttingContoursOfOppositeWindingLeaveNoSeam) {
     const Target t = paint(g, 80, 80, Affine::identity());
     for (int x = 12; x < 58; ++x) expect_pixel(t, x, 38, {0, 0, 1, 1}, 0, "row through the centre");
     for (int y = 12; y < 68; ++y) expect_pixel(t, 33, y, {0, 0, 1, 1}, 0, "column through the centre");
+}
+
+// Two rectangles sharing the edge x = 10.5 (mid-pixel), wound in opposite directions: the
+// nonzero fill is their union, so the pixel the edge crosses is fully covered. Plain signed-area
+// accumulation would give it |0.5 − 0.5| = 0 there, a hairline seam (test_glyphs-glyf_colr_1's
+// circles are four quarter-disc contours, two of each winding, and showed such seams).
+TEST(Paint, RectanglesSharingAnEdgeWithOppositeWindingLeaveNoSeam) {
+    const int w = 24, h = 12;
+    Path p;
+    p.move_to({2, 2});   // clockwise on the page (y up: counter-clockwise)
+    p.line_to({10.5, 2});
+    p.line_to({10.5, 10});
+    p.line_to({2, 10});
+    p.close();
+    p.move_to({10.5, 2});   // the other way round
+    p.line_to({10.5, 10});
+    p.line_to({20, 10});
+    p.line_to({20, 2});
+    p.close();
+    ColorGlyph g;
+    g.outlines = {p};
+    g.nodes = {PaintGlyph{0, 1}, PaintSolid{color(0, 0, 1)}};
+    const Target t = paint(g, w, h, flip(h));
+    for (int x = 2; x < 20; ++x) EXPECT_EQ(t.at(x, 6)[3], 255) << "pixel " << x << " of row 6";
 }
 
 TEST(Paint, NestedClipsMultiplyAndARotatedClipBoxIsAPolygon) {
