@@ -69,6 +69,11 @@ void make_bad_files(const fs::path& dir) {
     // A colour-bitmap-only font (CBDT, no outlines), under the name people know it by.
     write_file(dir / "NotoColorEmoji.ttf",
                test::slurp(std::string(BEZEL_FONTS_DIR) + "/noto-color-emoji/NotoColorEmoji-subset.ttf"));
+    // COLR fonts whose paint graphs loop or nest 10,000 deep (tests/data/colour).
+    const std::string colour = std::string(BEZEL_SOURCE_DIR) + "/tests/data/colour/";
+    write_file(dir / "colr-loop.ttf", test::slurp(colour + "colr_loop.ttf"));
+    write_file(dir / "colr-deep.ttf", test::slurp(colour + "colr_deep.ttf"));
+    write_file(dir / "colr-bad-palette.ttf", test::slurp(colour + "colr_bad_palette.ttf"));
     fs::create_directory(dir / "a-directory.ttf");
 }
 
@@ -126,6 +131,10 @@ std::vector<BadInput> catalogue() {
         {"subpixel text on a transparent page", {"render", kDejaVu, "--text", "g", "--lcd", "rgb", "--background", "transparent", "-o", "out.png"}, 2, "--lcd needs an opaque --background"},
         {"gamma out of range", {"render", kDejaVu, "--text", "g", "--gamma", "0.5", "-o", "out.png"}, 2, "--gamma"},
         {"unknown compression level", {"render", kDejaVu, "--text", "g", "--compression", "best", "-o", "out.png"}, 2, "--compression"},
+        {"a COLR paint graph that loops", {"render", "colr-loop.ttf", "--text", "B", "-o", "out.png"}, 1, "colr-loop.ttf: glyph"},
+        {"a COLR paint graph 10,000 deep", {"glyph", "colr-deep.ttf", "--char", "A", "-o", "out.png"}, 1, "colr-deep.ttf: glyph"},
+        {"a COLR palette index past CPAL's entries", {"glyph", "colr-bad-palette.ttf", "--char", "A", "-O", "json"}, 1, "colr-bad-palette.ttf: glyph"},
+        {"--palette past the font's palettes", {"glyph", "colr-bad-palette.ttf", "--char", "A", "--palette", "7", "-O", "json"}, 1, "--palette 7"},
         {"the outline of a colour bitmap font", {"outline", "NotoColorEmoji.ttf", "--char", "U+1F600", "-o", "out.svg"}, 1, "NotoColorEmoji.ttf: a bitmap-only font (no outlines): its glyphs are colour bitmaps"},
         {"a character the font lacks, with --strict", {"render", kDejaVu, "--text", "a\xE4\xB8\xAD", "--strict", "-o", "out.png"}, 1, "no glyph for U+4E2D"},
         {"a character the font lacks, with --strict (atlas)", {"atlas", kDejaVu, "--chars", "a\xE4\xB8\xAD", "--strict", "-o", "out.png", "--json", "out.json"}, 1, "no glyph for U+4E2D"},
