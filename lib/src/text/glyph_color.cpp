@@ -85,6 +85,10 @@ Expected<PreparedGlyph> GlyphRasterizer::prepare_color(GlyphId gid, ColorFormat 
     }
     auto paint = load_color_glyph(*font_, gid, options.color.palette);
     if (!paint) return paint.error();
+    // The builder keeps the graph's invariants; checked here too, since a refused graph has an
+    // empty box and would otherwise draw as silently blank.
+    if (Status valid = validate(*paint); !valid)
+        return Error{label(*font_, gid) + ": " + valid.error().message};
     auto metrics = font_->glyph_metrics(gid, {options.size_px, Hinting::None});
     if (!metrics) return metrics.error();
     glyph.box.advance_px = metrics->advance_px;
