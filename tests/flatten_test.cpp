@@ -25,17 +25,9 @@
 #include "flatten/forward_difference.hpp"
 #include "flatten/methods.hpp"
 
-// Counting allocations, to prove the steady state allocates nothing. The replacements pair
-// operator new with malloc and operator delete with free, which GCC cannot see through.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-static std::atomic<std::size_t> g_allocations{0};
-void* operator new(std::size_t n) {
-    ++g_allocations;
-    if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "support/allocation_counter.hpp"
+
+using bezel::test::g_allocations;
 
 namespace bezel {
 namespace {
@@ -582,7 +574,7 @@ TEST(FlattenPath, SteadyStateAllocatesNothing) {
         Polylines out;
         flatten(p, Affine::scale(3), FlattenOptions{0.01, method}, out);  // grows once
         out.clear();
-        std::size_t before = g_allocations.load();
+        const long before = g_allocations.load();
         for (int i = 0; i < 10; ++i) {
             out.clear();
             flatten(p, Affine::scale(3), FlattenOptions{0.01, method}, out);

@@ -12,21 +12,9 @@
 
 #include "bezel/text.hpp"
 
-// Counts global allocations so the no-allocation promise can be checked. The replacement pair is
-// malloc/free on both sides; g++ 12 with the sanitizers inlines the two into a test's code and
-// then warns that free() meets operator new's pointer (-Wmismatched-new-delete), wrongly: here
-// that pairing is the definition.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-void* operator new(std::size_t n) {
-    g_allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "support/allocation_counter.hpp"
+
+using bezel::test::g_allocations;
 
 namespace bezel {
 namespace {

@@ -17,18 +17,9 @@
 #include "bezel/paint.hpp"
 #include "support/shapes.hpp"
 
-// Counts global allocations so the no-allocation promise can be checked (as glyph_cache_test).
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-void* operator new(std::size_t n) {
-    g_allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "support/allocation_counter.hpp"
+
+using bezel::test::g_allocations;
 
 namespace bezel {
 namespace {

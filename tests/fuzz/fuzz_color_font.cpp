@@ -12,8 +12,6 @@
 // Seeds (corpus/fuzz_color_font): fonts-test/colour's small COLRv1 and sbix fonts and
 // fonts-test/noto-color-emoji's CBDT subset (Apache-2.0 and OFL, see their folders), and the COLR
 // test fonts of tests/data/colour (make_bad_colr_fonts.py).
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -27,22 +25,10 @@
 #include "bezel/color_glyph.hpp"
 #include "bezel/glyph.hpp"
 #include "bezel/limits.hpp"
+#include "fuzz_font_file.hpp"
 #include "fuzz_reader.hpp"
 
 namespace {
-
-std::string scratch_file() {
-    const char* dir = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : std::getenv("TMPDIR");
-    return std::string(dir ? dir : "/tmp") + "/bezel-fuzz-color-font-" + std::to_string(getpid()) +
-           ".bin";
-}
-
-bool write_file(const std::string& file, const std::uint8_t* data, std::size_t size) {
-    std::FILE* f = std::fopen(file.c_str(), "wb");
-    if (!f) return false;
-    const bool ok = std::fwrite(data, 1, size, f) == size;
-    return std::fclose(f) == 0 && ok;
-}
 
 bool finite(bezel::Point p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
@@ -122,8 +108,8 @@ void check_bitmap(const bezel::ColorBitmap& b) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    static const std::string file = scratch_file();
-    if (!write_file(file, data, size)) std::abort();
+    static const std::string file = bezel::fuzz::scratch_font_file("color-font");
+    if (!bezel::fuzz::write_font_file(file, data, size)) std::abort();
     auto opened = bezel::Font::open(file, 0);
     if (!opened) {
         BEZEL_FUZZ_CHECK(opened.error().message.find(file) != std::string::npos);

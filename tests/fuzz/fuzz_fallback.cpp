@@ -2,10 +2,12 @@
 // fonts (outline fonts of several scripts, a bitmap-only colour font, a collection's faces, a
 // variable font at random coordinates, files that do not exist), and a fallback source that
 // names random fonts of the same pool. Through FontCollection::open, layout_text over the
-// collection and TextRenderer::render_gray. Properties: no crash; a list with a missing file or a
-// face out of range is an Error naming the file; every placed glyph's font is in the
-// collection, its cluster inside the text, its position finite; the fallback never grows the
-// collection past kMaxCollectionFonts; a rendered page has the layout's size or an Error.
+// collection and TextRenderer::render_gray (render() when the text holds colour glyphs).
+// Properties: no crash; a list with a missing file or a face out of range is an Error naming
+// the file; every placed glyph's font is in the collection, its cluster inside the text, its
+// position finite; the fallback never grows the collection past kMaxCollectionFonts; every font
+// the renderer draws with has outlines or colour glyphs; a gray page holds no colour glyph; a
+// rendered page has the layout's size or an Error.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -97,14 +99,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     if (!bezel::decode_utf8(text).ok()) BEZEL_FUZZ_CHECK(!layout.ok());
 
-    // The renderer takes outline fonts only: a list with the bitmap-only font is an Error.
+    // The renderer takes outline fonts and colour fonts (the bitmap-only one draws in colour); a
+    // gray page refuses text that holds a colour glyph, which render() then draws in RGBA.
     auto renderer = bezel::TextRenderer::open(std::move(*fonts), std::size_t{1} << 20);
     if (!renderer) return 0;
     auto page = renderer->render_gray(text, options);
+    for (std::size_t i = 0; i < renderer->fonts().size(); ++i)
+        BEZEL_FUZZ_CHECK(renderer->fonts().font(i).require_outlines().ok() ||
+                         renderer->fonts().font(i).has_color_bitmaps());
     if (page) {
         BEZEL_FUZZ_CHECK(page->width() <= bezel::kMaxImageDim && page->height() <= bezel::kMaxImageDim);
-        for (std::size_t i = 0; i < renderer->fonts().size(); ++i)
-            BEZEL_FUZZ_CHECK(renderer->fonts().font(i).require_outlines().ok());
+        BEZEL_FUZZ_CHECK(!renderer->last_text_has_color());
+    } else if (renderer->last_text_has_color()) {
+        auto colour = renderer->render(text, options);
+        if (colour)
+            BEZEL_FUZZ_CHECK(colour->width() <= bezel::kMaxImageDim &&
+                             colour->height() <= bezel::kMaxImageDim);
     }
     return 0;
 }

@@ -3,8 +3,6 @@
 // input is written to one per-process file in /dev/shm (or $TMPDIR). Properties: no crash or
 // sanitizer report; every outline bezel returns is finite and its raw points agree with its
 // contour ends; rasterizing it succeeds or fails with a message.
-#include <unistd.h>
-
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -15,21 +13,10 @@
 
 #include "bezel/font.hpp"
 #include "bezel/raster.hpp"
+#include "fuzz_font_file.hpp"
 #include "fuzz_reader.hpp"
 
 namespace {
-
-std::string scratch_file() {
-    const char* dir = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : std::getenv("TMPDIR");
-    return std::string(dir ? dir : "/tmp") + "/bezel-fuzz-font-" + std::to_string(getpid()) + ".bin";
-}
-
-bool write_file(const std::string& file, const std::uint8_t* data, std::size_t size) {
-    std::FILE* f = std::fopen(file.c_str(), "wb");
-    if (!f) return false;
-    const bool ok = std::fwrite(data, 1, size, f) == size;
-    return std::fclose(f) == 0 && ok;
-}
 
 void check_outline(const bezel::GlyphOutline& g, bezel::Rasterizer& raster) {
     BEZEL_FUZZ_CHECK(g.path.is_finite());
@@ -48,8 +35,8 @@ void check_outline(const bezel::GlyphOutline& g, bezel::Rasterizer& raster) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    static const std::string file = scratch_file();
-    if (!write_file(file, data, size)) std::abort();
+    static const std::string file = bezel::fuzz::scratch_font_file("font");
+    if (!bezel::fuzz::write_font_file(file, data, size)) std::abort();
     auto opened = bezel::Font::open(file, 0);
     if (!opened) {
         BEZEL_FUZZ_CHECK(opened.error().message.find(file) != std::string::npos);
