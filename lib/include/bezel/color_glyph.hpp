@@ -30,6 +30,11 @@ namespace bezel {
 // them: COLRv1, COLRv0, a bitmap (CBDT, sbix), SVG (not drawn), or none.
 enum class ColorFormat : std::uint8_t { None, ColrV1, ColrV0, Bitmap, Svg };
 const char* color_format_name(ColorFormat format);   // "none", "COLRv1", "COLRv0", "bitmap", "SVG"
+// Whether bezel draws a glyph of this format in colour: COLRv1, COLRv0 and bitmaps (not SVG).
+constexpr bool drawn_in_color(ColorFormat format) {
+    return format == ColorFormat::ColrV1 || format == ColorFormat::ColrV0 ||
+           format == ColorFormat::Bitmap;
+}
 
 // Which colour tables the face has (for `bezel info`).
 struct ColorTables {

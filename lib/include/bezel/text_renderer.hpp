@@ -65,7 +65,9 @@ public:
 // A FontCollection + a GlyphRasterizer per font + one GlyphCache: the one-call text renderer.
 class TextRenderer {
 public:
-    // One font file. Errors name the file; a bitmap-only font is one (Font::require_outlines).
+    // One font file. Errors name the file. A bitmap-only colour font (CBDT, sbix) opens: its
+    // glyphs are drawn in colour (with TextRenderOptions::color.enabled false, drawing one is an
+    // Error: the font has no outlines).
     static Expected<TextRenderer> open(const std::string& file, int face_index = 0,
                                        std::size_t cache_bytes = kDefaultGlyphCacheBytes);
     // A list of fonts, text drawn with fallback (layout.hpp's layout_text over a collection).

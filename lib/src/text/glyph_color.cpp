@@ -24,10 +24,6 @@ std::string label(Font& font, GlyphId gid) {
     return "glyph " + std::to_string(gid) + " (" + font.glyph_name(gid) + ")";
 }
 
-bool drawn_in_color(ColorFormat f) {
-    return f == ColorFormat::ColrV1 || f == ColorFormat::ColrV0 || f == ColorFormat::Bitmap;
-}
-
 // The whole-pixel box around [x0, x1] × [y0, y1] (pen-relative pixels, y down), or an error when it
 // reaches past kMaxBitmapDim.
 Status box_of(Font& font, GlyphId gid, double x0, double y0, double x1, double y1, bool round,

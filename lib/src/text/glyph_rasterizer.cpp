@@ -110,9 +110,7 @@ Expected<PreparedGlyph> GlyphRasterizer::prepare(GlyphId gid, const GlyphRenderO
     // Fonts without colour tables (most) pay one flag test for colour.
     if (options.color.enabled && tables_.any()) {
         const ColorFormat format = color_format(gid);
-        if (format == ColorFormat::ColrV1 || format == ColorFormat::ColrV0 ||
-            format == ColorFormat::Bitmap)
-            return prepare_color(gid, format, options);
+        if (drawn_in_color(format)) return prepare_color(gid, format, options);
     }
     auto outline = font_->outline(gid, {options.size_px, options.hinting});
     if (!outline) return outline.error();

@@ -149,9 +149,7 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     for (const PlacedGlyph& g : layout->glyphs) {
         const ColorFormat format = r.slots[g.font].rasterizer->color_format(g.gid);
         if (format == ColorFormat::Svg) ++r.svg_glyphs;
-        if (format == ColorFormat::ColrV1 || format == ColorFormat::ColrV0 ||
-            format == ColorFormat::Bitmap)
-            r.has_color = r.has_color || options.color.enabled;
+        if (drawn_in_color(format)) r.has_color = r.has_color || options.color.enabled;
     }
     if (gray_page && r.has_color)
         return Error{"render_gray: the text holds colour glyphs, which a gray page cannot show "
