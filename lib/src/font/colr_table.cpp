@@ -75,41 +75,44 @@ Expected<ColrTable> ColrTable::parse(std::vector<std::uint8_t> bytes) {
     return t;
 }
 
-std::optional<std::uint32_t> ColrTable::v1_root(GlyphId gid) const {
-    // BaseGlyphPaintRecords are sorted by glyph id (the spec's requirement): binary search.
-    std::uint32_t lo = 0, hi = num_base_v1_;
+namespace {
+
+// The byte offset of the record for `gid` among `count` records of `stride` bytes from `first`,
+// each starting with its glyph id (u16): the spec keeps both base-glyph lists sorted by glyph id,
+// so a binary search. nullopt when the glyph has no record.
+std::optional<std::size_t> find_base_record(const std::vector<std::uint8_t>& bytes,
+                                            std::size_t first, std::uint32_t count,
+                                            std::size_t stride, GlyphId gid) {
+    std::uint32_t lo = 0, hi = count;
     while (lo < hi) {
         const std::uint32_t mid = lo + (hi - lo) / 2;
-        const std::size_t rec = base_v1_ + 4 + std::size_t{mid} * kBaseGlyphPaintRecord;
-        const GlyphId g = read_u16(bytes_, rec);
+        const std::size_t rec = first + std::size_t{mid} * stride;
+        const GlyphId g = read_u16(bytes, rec);
         if (g < gid) {
             lo = mid + 1;
         } else if (g > gid) {
             hi = mid;
         } else {
-            const std::uint64_t offset = std::uint64_t{base_v1_} + read_u32(bytes_, rec + 2);
-            if (offset >= bytes_.size()) return std::nullopt;
-            return static_cast<std::uint32_t>(offset);
+            return rec;
         }
     }
     return std::nullopt;
 }
 
+}  // namespace
+
+std::optional<std::uint32_t> ColrTable::v1_root(GlyphId gid) const {
+    const auto rec = find_base_record(bytes_, base_v1_ + 4, num_base_v1_, kBaseGlyphPaintRecord, gid);
+    if (!rec) return std::nullopt;
+    const std::uint64_t offset = std::uint64_t{base_v1_} + read_u32(bytes_, *rec + 2);
+    if (offset >= bytes_.size()) return std::nullopt;
+    return static_cast<std::uint32_t>(offset);
+}
+
 std::optional<ColrTable::V0Layers> ColrTable::v0_layers(GlyphId gid) const {
-    std::uint32_t lo = 0, hi = num_base_v0_;
-    while (lo < hi) {
-        const std::uint32_t mid = lo + (hi - lo) / 2;
-        const std::size_t rec = base_v0_ + std::size_t{mid} * kBaseGlyphRecord;
-        const GlyphId g = read_u16(bytes_, rec);
-        if (g < gid) {
-            lo = mid + 1;
-        } else if (g > gid) {
-            hi = mid;
-        } else {
-            return V0Layers{read_u16(bytes_, rec + 2), read_u16(bytes_, rec + 4)};
-        }
-    }
-    return std::nullopt;
+    const auto rec = find_base_record(bytes_, base_v0_, num_base_v0_, kBaseGlyphRecord, gid);
+    if (!rec) return std::nullopt;
+    return V0Layers{read_u16(bytes_, *rec + 2), read_u16(bytes_, *rec + 4)};
 }
 
 std::optional<ColrTable::V0Layer> ColrTable::v0_layer(std::uint32_t index) const {
