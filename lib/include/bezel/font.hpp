@@ -20,6 +20,7 @@
 #include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 using GlyphId = std::uint32_t;
@@ -196,3 +197,4 @@ private:
 };
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -18,6 +18,7 @@
 #include "bezel/font.hpp"
 #include "bezel/limits.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // Decodes UTF-8 strictly (no overlong forms, no surrogates, nothing above U+10FFFF). The error
@@ -117,3 +118,4 @@ private:
 };
 
 }  // namespace bezel
+#pragma GCC visibility pop
