@@ -138,6 +138,20 @@ struct GlyphOutline {
     bool overlapping_contours = false;
 };
 
+// A glyph's image in a monochrome or gray bitmap strike the font embeds (EBDT/EBLC, Apple's
+// bdat/bloc): hand-tuned pixels for one size, as coverage. Pixels, y down; left/top as FreeType's
+// bitmap_left / bitmap_top (top = rows above the baseline).
+struct StrikeBitmap {
+    std::vector<std::uint8_t> coverage;   // width × height, rows packed; 0..255 (a 1-bit strike
+                                          // gives 0 or 255, a 2-, 4- or 8-bit one its levels
+                                          // scaled to 0..255)
+    int width = 0, height = 0;
+    int left = 0, top = 0;
+    int ppem = 0;              // the strike's pixels per em
+    int bit_depth = 0;         // 1 (monochrome), 2, 4 or 8 (gray)
+    double advance_px = 0;     // the strike's own advance, whole pixels
+};
+
 class Font {
 public:
     // Opens a font file (TTF, OTF, TTC/OTC with `face_index`). The error names the file and
@@ -187,6 +201,16 @@ public:
     // monochrome bitmap fonts are not supported". Every outline call fails with it; the colour
     // glyphs of such a font are read with load_color_bitmap (bezel/color_glyph.hpp).
     Status require_outlines() const;
+
+    // The face has monochrome or gray bitmap strikes (EBLC/EBDT or bloc/bdat). Colour strikes
+    // (CBDT, sbix) are not these: color_glyph.hpp draws them.
+    bool has_bitmap_strikes() const;
+    // The image of `gid` in the monochrome or gray strike of exactly `size_px` pixels per em (to
+    // 1/64 px: a strike is drawn at its own size, never scaled), or nullopt when the font has no
+    // such strike or the strike has no image of the glyph (the glyph is then drawn from its
+    // outline). Errors name the font and glyph: size out of range, gid ≥ glyph_count(), a
+    // damaged image, one larger than kMaxBitmapDim a side.
+    Expected<std::optional<StrikeBitmap>> strike_bitmap(GlyphId gid, double size_px);
 
     // For a bitmap-only sfnt, units per em, ascender, descender and line gap come from its head
     // and hhea tables (FreeType reports them as 0 for faces without outlines).

@@ -56,8 +56,25 @@ struct GlyphColorOptions {
 };
 
 struct GlyphRenderOptions {
-    double size_px = 16;
-    Hinting hinting = Hinting::None;   // as OutlineOptions::hinting
+    double size_px = 16;   // the em size in pixels, (0, kMaxFontSizePx]
+    // Fitting the outline to the pixel grid (font.hpp's Hinting, FreeType's hinters): None, Light
+    // (vertical only: what 12-16 px UI text usually wants), Full (the font's instructions), Auto
+    // (FreeType's auto-hinter). Honoured by prepare() and part of GlyphCache's key. A glyph hinted
+    // horizontally (Full, Auto) was fitted at a whole-pixel origin: draw it at a whole-pixel pen
+    // (offset_px.x = 0), as TextRenderer does. Ignored by colour glyphs and bitmap strikes.
+    Hinting hinting = Hinting::None;
+    // Embedded bitmap strikes (font.hpp's StrikeBitmap): when true and the font has a monochrome
+    // or gray strike of exactly size_px pixels per em holding the glyph, the glyph is that
+    // strike's pixels as coverage (a 1-bit strike 0 or 255), not its outline: box.bitmap_strike
+    // says so. The bitmap is placed at the whole pixel nearest the pen (offset_px rounded, as a
+    // strike cannot move by a fraction of a pixel); hinting, slant, bold, box mode and the fill's
+    // rule and flattening do not apply; in LCD modes each coverage byte is written to all three
+    // subpixels (no colour fringes: the strike was designed for whole pixels). box.advance_px is
+    // the strike's own advance. A colour glyph stays colour. Off by default: toolkits draw
+    // anti-aliased outlines at subpixel pens by default (Dear ImGui's FreeType builder loads
+    // without bitmaps unless asked), and strikes, designed for aliased display, look out of
+    // place beside them; a toolkit that wants a font's hand-tuned small sizes turns it on.
+    bool embedded_bitmaps = false;
     // Synthetic slant (hb-view's --font-slant): each point moves right by `slant` times its
     // height above the baseline (0.2 leans about 11°; negative leans left), after hinting.
     // |slant| ≤ kMaxSyntheticSlant. The box and the FreeType box are those of the slanted outline.
@@ -112,6 +129,9 @@ struct GlyphBox {
     // Drawn in colour (a COLR paint or a bitmap): draw_rgba() gives its pixels, width × height
     // premultiplied RGBA with no LCD padding; draw() gives its alpha as coverage.
     bool color = false;
+    // Drawn from an embedded monochrome or gray bitmap strike (GlyphRenderOptions::
+    // embedded_bitmaps), not from the outline. In LCD modes its box has no LCD padding.
+    bool bitmap_strike = false;
 };
 
 // A glyph loaded and measured for one set of options: prepare() reads the outline from the Font
@@ -127,6 +147,8 @@ struct PreparedGlyph {
     std::shared_ptr<const ColorGlyph> paint;
     Affine paint_transform;
     std::shared_ptr<const ColorBitmap> bitmap;
+    // A glyph drawn from a bitmap strike (box.bitmap_strike): its pixels, copied into the box.
+    std::shared_ptr<const StrikeBitmap> strike;
 };
 
 // Rasterizes single glyphs of one Font into caller buffers with a stride. What a toolkit calls
@@ -178,7 +200,10 @@ public:
 private:
     Expected<PreparedGlyph> prepare_color(GlyphId gid, ColorFormat format,
                                           const GlyphRenderOptions& options);
+    Expected<PreparedGlyph> prepare_strike(GlyphId gid, StrikeBitmap strike,
+                                           const GlyphRenderOptions& options);
     Status draw_color_alpha(const PreparedGlyph& glyph, const MaskView& target);
+    Status draw_strike(const PreparedGlyph& glyph, const MaskView& target);
     Font font_;   // shares the Impl of the Font it was made from
     Rasterizer raster_;
     std::unique_ptr<Painter> painter_;            // made on the first colour glyph
@@ -213,7 +238,7 @@ inline constexpr int kSubpixelBins = 4;
 //     its variations finds its glyphs of the new instance (and, when it returns to one of the
 //     last few, those of the old);
 //   the glyph id and the pen's subpixel bin on each axis (kSubpixelBins);
-//   every option that changes the pixels: size, hinting, slant, bold, box mode, every FillOptions
+//   every option that changes the pixels: size, hinting, embedded bitmaps, slant, bold, box mode, every FillOptions
 //     field but the origin, the colour options (enabled, palette, custom entries, bitmap filter;
 //     the foreground only for a colour glyph whose paint uses it, so text colours share mask
 //     glyphs).

@@ -67,6 +67,7 @@ Expected<Font> Font::open(const FontFace& source) {
                      ft_error_text(e)};
     }
     impl->face.reset(face);
+    impl->gray_strikes = font_detail::find_gray_strikes(face);
     return Font(std::move(impl));
 }
 

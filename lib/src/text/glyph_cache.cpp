@@ -46,7 +46,7 @@ struct Key {
     std::uint8_t bin_x, bin_y, coverage, rule_overlap;   // coverage: format and LCD order
     std::uint8_t outline_box;   // hinting (2 bits), box mode (1) and flattening method (2)
     std::array<std::uint8_t, 5> lcd_filter;
-    std::uint8_t color_mode;    // colour enabled (1 bit) and bitmap filter (1)
+    std::uint8_t color_mode;    // colour enabled (1 bit), bitmap filter (1), embedded bitmaps (1)
     std::int32_t palette;
     std::uint64_t custom_palette;   // a hash of the custom entries (0: none)
 
@@ -333,7 +333,8 @@ Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, GlyphI
                                             static_cast<int>(f.flatten.method) << 3),
                   f.lcd_filter.taps,
                   static_cast<std::uint8_t>(static_cast<int>(o.color.enabled) |
-                                            static_cast<int>(o.color.bitmap_filter) << 1),
+                                            static_cast<int>(o.color.bitmap_filter) << 1 |
+                                            static_cast<int>(o.embedded_bitmaps) << 2),
                   o.color.palette.palette,
                   custom_palette_hash(o.color.palette.custom)};
     const std::uint32_t foreground = rgba_bits(o.color.foreground);
