@@ -101,6 +101,12 @@ Status check_with_freetype(Bytes& impl) {
     FT_Face probe = nullptr;
     if (FT_Error e = FT_New_Memory_Face(library, impl.data, static_cast<FT_Long>(impl.size), -1,
                                         &probe)) {
+        // Over memory, FreeType reports bytes too short for any format's header as a stream
+        // error, which alone would not tell the reader that the data is simply not a font.
+        if (e == FT_Err_Invalid_Stream_Operation)
+            return Error{name + ": not a font: its " + std::to_string(impl.size) +
+                         " bytes end before FreeType recognises a format (" + ft_error_text(e) +
+                         ")"};
         return Error{name + ": " + ft_error_text(e)};
     }
     impl.face_count = static_cast<int>(probe->num_faces);
