@@ -2,7 +2,8 @@
 //
 // Units: glyph outlines and glyph metrics are in PIXELS at the requested size, y DOWN, origin at
 // the pen position on the baseline (so an ascender is at negative y). Face-wide metrics are in
-// font units (`em_units`) as the font stores them, y UP (ascender > 0, descender < 0).
+// font units (`em_units`) as the font stores them, y UP (ascender > 0, descender < 0);
+// Font::metrics_px gives them in pixels at a size, as distances from the baseline.
 //
 // Threading: a Font owns its own FreeType library instance and face. One Font must not be used
 // from two threads at once (FreeType faces are not thread-safe); separate Font objects, even of

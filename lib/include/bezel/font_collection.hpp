@@ -71,8 +71,8 @@ public:
                               const std::vector<VariationSetting>& variations = {});
 
     std::size_t size() const;
-    // Fonts keep their index and their address for the life of the collection (a
-    // GlyphRasterizer may hold font(i)).
+    // Fonts keep their index and their address for the life of the collection. A
+    // GlyphRasterizer made from font(i) shares its face (glyph.hpp) and follows its variations.
     Font& font(std::size_t i);
     Shaper& shaper(std::size_t i);
     const FontSource& source(std::size_t i) const;

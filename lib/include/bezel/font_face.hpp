@@ -43,9 +43,12 @@ std::shared_ptr<const void> derived_state(const FontFace& face,
 
 class FontFace {
 public:
-    // Reads a font file (TTF, OTF, TTC/OTC) once. Errors name the file: no such file, a directory,
-    // unreadable, larger than kMaxFontBytes, not a font FreeType reads (its reason), face
-    // index out of range (0..face count − 1).
+    // Reads a font file (TTF, OTF, TTC/OTC) once: it is mapped read-only, so only the pages its
+    // glyphs touch are read, and shared by every Font and Shaper of the face (the file must not
+    // be truncated while they exist, as with FreeType's and HarfBuzz's own file mappings).
+    // Errors name the file: no such file, a directory, empty, unreadable, larger than
+    // kMaxFontBytes, not a font FreeType reads (its reason), face index out of range
+    // (0..face count − 1).
     static Expected<FontFace> open(const std::string& file, int face_index = 0);
     // Caller-owned bytes: not copied. `data` must stay valid and unchanged until every FontFace,
     // Font and Shaper made from it (and every copy of them) is destroyed. Errors name
