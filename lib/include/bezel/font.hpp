@@ -47,8 +47,9 @@ struct FontMetrics {
 // line at y = +descent_px. Unhinted: FontMetrics scaled by size_px / units_per_em.
 struct FontMetricsPx {
     double size_px = 0;
-    double ascent_px = 0;       // above the baseline (FontMetrics::ascender scaled), > 0 for a usual font
-    double descent_px = 0;      // below the baseline (−FontMetrics::descender scaled), > 0 for a usual font
+    // Both > 0 for a usual font:
+    double ascent_px = 0;       // above the baseline (FontMetrics::ascender scaled)
+    double descent_px = 0;      // below the baseline (−FontMetrics::descender scaled)
     double line_gap_px = 0;     // extra leading between lines
     double line_height_px = 0;  // baseline to baseline: ascent_px + descent_px + line_gap_px
 };

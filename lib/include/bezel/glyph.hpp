@@ -5,9 +5,9 @@
 // rows ABOVE the baseline, so the bitmap's first row is at pen.y − top).
 //
 // Threading: a GlyphRasterizer or GlyphCache holds scratch memory (and the rasterizer shares a
-// Font's FreeType face); one object must not be used from two threads at once. Steady state allocates nothing per
-// glyph: cache hits reuse their buffers and the cache is bounded (a miss, like every prepare(),
-// allocates the outline it loads).
+// Font's FreeType face); one object must not be used from two threads at once. Steady state
+// allocates nothing per glyph: cache hits reuse their buffers and the cache is bounded (a miss,
+// like every prepare(), allocates the outline it loads).
 #pragma once
 
 #include <cstddef>
@@ -72,8 +72,9 @@ struct GlyphRenderOptions {
     // subpixels (no colour fringes: the strike was designed for whole pixels). box.advance_px is
     // the strike's own advance. A colour glyph stays colour. Off by default: toolkits draw
     // anti-aliased outlines at subpixel pens by default (Dear ImGui's FreeType builder loads
-    // without bitmaps unless asked), and strikes, designed for aliased display, look out of
-    // place beside them; a toolkit that wants a font's hand-tuned small sizes turns it on.
+    // without bitmaps unless ImGuiFreeTypeBuilderFlags_Bitmap asks), and strikes, designed for
+    // aliased display, look out of place beside them; a toolkit that wants a font's hand-tuned
+    // small sizes turns it on.
     bool embedded_bitmaps = false;
     // Synthetic slant (hb-view's --font-slant): each point moves right by `slant` times its
     // height above the baseline (0.2 leans about 11°; negative leans left), after hinting.
@@ -238,10 +239,10 @@ inline constexpr int kSubpixelBins = 4;
 //     its variations finds its glyphs of the new instance (and, when it returns to one of the
 //     last few, those of the old);
 //   the glyph id and the pen's subpixel bin on each axis (kSubpixelBins);
-//   every option that changes the pixels: size, hinting, embedded bitmaps, slant, bold, box mode, every FillOptions
-//     field but the origin, the colour options (enabled, palette, custom entries, bitmap filter;
-//     the foreground only for a colour glyph whose paint uses it, so text colours share mask
-//     glyphs).
+//   every option that changes the pixels: size, hinting, embedded bitmaps, slant, bold, box
+//     mode, every FillOptions field but the origin, the colour options (enabled, palette, custom
+//     entries, bitmap filter; the foreground only for a colour glyph whose paint uses it, so
+//     text colours share mask glyphs).
 // Memory is bounded by max_bytes (least recently used entries are evicted), except while a
 // batch pins the glyphs it returned (begin_batch).
 //

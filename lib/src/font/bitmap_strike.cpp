@@ -103,7 +103,8 @@ Expected<std::optional<StrikeBitmap>> Font::strike_bitmap(GlyphId gid, double si
     out.advance_px = static_cast<double>(slot->advance.x) / 64.0;
     out.coverage.resize(static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height));
     for (int y = 0; y < out.height; ++y) {
-        const unsigned char* row = bytes.bitmap.buffer + static_cast<std::ptrdiff_t>(y) * bytes.bitmap.pitch;
+        const unsigned char* row =
+            bytes.bitmap.buffer + static_cast<std::ptrdiff_t>(y) * bytes.bitmap.pitch;
         for (int x = 0; x < out.width; ++x) {
             const unsigned v = row[x];
             out.coverage[static_cast<std::size_t>(y) * out.width + x] =
