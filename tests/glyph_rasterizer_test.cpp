@@ -353,6 +353,36 @@ TEST(GlyphRasterizer, SlantShearsTheInkAndKeepsItsArea) {
     }
 }
 
+// Issue 38 asked for hinting in the glyph path: GlyphRenderOptions::hinting reaches the outline
+// the rasterizer fills (the Font's, loaded with that mode), and light hinting changes the pixels
+// of 13 px UI text.
+TEST(GlyphRasterizerHinting, EveryModeFillsTheOutlineTheFontLoadsWithIt) {
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    GlyphRasterizer r(*font);
+    const GlyphId e = font->glyph_for_char(U'e').value();
+    std::vector<std::vector<std::uint8_t>> masks;
+    for (Hinting mode : {Hinting::None, Hinting::Light, Hinting::Full, Hinting::Auto}) {
+        GlyphRenderOptions o;
+        o.size_px = 13;
+        o.hinting = mode;
+        auto prepared = r.prepare(e, o);
+        auto outline = font->outline(e, {13, mode});
+        ASSERT_TRUE(prepared && outline);
+        const Rect a = prepared->path.bounds(), b = outline->path.bounds();
+        EXPECT_EQ(a.x0, b.x0) << hinting_name(mode);
+        EXPECT_EQ(a.y0, b.y0) << hinting_name(mode);
+        EXPECT_EQ(a.x1, b.x1) << hinting_name(mode);
+        EXPECT_EQ(a.y1, b.y1) << hinting_name(mode);
+        std::vector<std::uint8_t> pixels(
+            static_cast<std::size_t>(prepared->box.width) * static_cast<std::size_t>(prepared->box.height));
+        ASSERT_TRUE(r.draw(*prepared, {pixels.data(), prepared->box.width, prepared->box.height,
+                                       prepared->box.width}));
+        masks.push_back(pixels);
+    }
+    EXPECT_NE(masks[0], masks[1]) << "light hinting must change 13 px pixels";
+}
+
 // --- Embedded bitmap strikes (fonts-test/bitmap-strike: a 16 ppem 1-bit strike with A and B, a
 // 20 ppem 8-bit strike with A; the bitmaps are patterns, not the outlines' rectangles) -----------
 
