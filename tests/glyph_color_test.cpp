@@ -236,6 +236,32 @@ TEST(GlyphColor, TheCacheKeysOnPaletteAndOnTheForegroundOnlyWhereItIsUsed) {
     EXPECT_EQ(cache.stats().misses, 4u);
 }
 
+// Inside a batch a text-colour glyph asked for in a second colour must not repaint the entry the
+// batch already holds: both colours stay valid together.
+TEST(GlyphColor, ABatchHoldsOneGlyphInTwoTextColours) {
+    Font font = open(kTestGlyphs);
+    GlyphRasterizer r(font);
+    GlyphCache cache;
+    GlyphRenderOptions o;
+    o.size_px = 32;
+    const GlyphId fg_glyph = gid_of(font, 0xF0B06);
+    auto pixels = [](const CachedGlyph& g) {
+        return std::vector<std::uint8_t>(g.rgba.data, g.rgba.data + 4 * g.box.width * g.box.height);
+    };
+    ASSERT_TRUE(cache.begin_batch());
+    o.color.foreground = {0, 0, 255, 255};
+    auto blue = cache.get(r, fg_glyph, o);
+    ASSERT_TRUE(blue);
+    const std::vector<std::uint8_t> blue_px = pixels(**blue);
+    o.color.foreground = {255, 0, 0, 255};
+    auto red = cache.get(r, fg_glyph, o);
+    ASSERT_TRUE(red);
+    EXPECT_NE(*red, *blue);
+    EXPECT_EQ(pixels(**blue), blue_px) << "the batch's blue glyph was repainted";
+    EXPECT_NE(pixels(**red), blue_px);
+    cache.end_batch();
+}
+
 // A bitmap strike scaled to the size: its box is the strike's scaled, and it is coloured.
 void expect_bitmap_glyph(const std::string& file, char32_t c, double size_px) {
     Font font = open(file);
