@@ -825,8 +825,14 @@ TEST(FontErrors, NonFontAndTruncatedFilesGiveFreeTypesReason) {
         write_prefix(kDejaVu, truncated, bytes);
         f = Font::open(truncated);
         EXPECT_FALSE(f) << bytes << " bytes";
-        if (!f) {
-            EXPECT_EQ(f.error().message.rfind(truncated + ": FreeType error 0x", 0), 0u);
+        if (!f && bytes == 0) {
+            EXPECT_EQ(f.error().message, truncated + ": empty file, not a font");
+        } else if (!f) {
+            // FreeType's reason, alone or after "not a font: its N bytes end before FreeType
+            // recognises a format" (a header cut short).
+            EXPECT_EQ(f.error().message.rfind(truncated + ": ", 0), 0u) << f.error().message;
+            EXPECT_NE(f.error().message.find("FreeType error 0x"), std::string::npos)
+                << f.error().message;
         }
         std::filesystem::remove(truncated);
     }

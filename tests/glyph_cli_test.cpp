@@ -129,6 +129,35 @@ TEST_F(GlyphCli, JsonIsTheContract) {
     EXPECT_EQ(doc[2]["rows"].size(), 0u);
 }
 
+// fonts-test/bitmap-strike: 'A' has a 16 ppem 1-bit strike, an 8x10 checkerboard (pixel (x, y)
+// inked when x + y is odd), while its outline is a solid rectangle.
+TEST_F(GlyphCli, EmbeddedBitmapsDrawTheStrikeOfTheExactSize) {
+    const std::string font = std::string(BEZEL_FONTS_DIR) + "/bitmap-strike/BitmapStrike.ttf";
+    json strike = run_json({font, "--char", "A", "--font-size", "16", "--embedded-bitmaps"});
+    ASSERT_EQ(strike.size(), 1u);
+    const json& a = strike[0];
+    EXPECT_EQ(a["left"], 1);
+    EXPECT_EQ(a["top"], 10);
+    EXPECT_EQ(a["advance"], 11.0);
+    ASSERT_EQ(a["rows"].size(), 10u);
+    for (int y = 0; y < 10; ++y) {
+        const std::string row = a["rows"][y].get<std::string>();
+        ASSERT_EQ(row.size(), 16u);
+        for (int x = 0; x < 8; ++x)
+            EXPECT_EQ(hex_byte(row, x), (x + y) % 2 ? 255 : 0) << x << "," << y;
+    }
+    // Without the flag, and at a size with no strike: the outline, solid inside.
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{font, "--char", "A", "--font-size", "16"},
+          std::vector<std::string>{font, "--char", "A", "--font-size", "17", "--embedded-bitmaps"}}) {
+        json outline = run_json(args);
+        ASSERT_EQ(outline.size(), 1u);
+        const std::string middle = outline[0]["rows"][5].get<std::string>();
+        EXPECT_EQ(hex_byte(middle, 3), 255);
+        EXPECT_EQ(hex_byte(middle, 4), 255);
+    }
+}
+
 TEST_F(GlyphCli, BoxesAreFreeTypesBitmapBoxes) {
     // left/top/width/height equal FT_Render_Glyph's bitmap_left/bitmap_top/width/rows, for all
     // of printable ASCII in a TrueType and a CFF font, at several sizes and pen offsets.

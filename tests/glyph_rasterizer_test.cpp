@@ -353,5 +353,162 @@ TEST(GlyphRasterizer, SlantShearsTheInkAndKeepsItsArea) {
     }
 }
 
+// Issue 38 asked for hinting in the glyph path: GlyphRenderOptions::hinting reaches the outline
+// the rasterizer fills (the Font's, loaded with that mode), and light hinting changes the pixels
+// of 13 px UI text.
+TEST(GlyphRasterizerHinting, EveryModeFillsTheOutlineTheFontLoadsWithIt) {
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    GlyphRasterizer r(*font);
+    const GlyphId e = font->glyph_for_char(U'e').value();
+    std::vector<std::vector<std::uint8_t>> masks;
+    for (Hinting mode : {Hinting::None, Hinting::Light, Hinting::Full, Hinting::Auto}) {
+        GlyphRenderOptions o;
+        o.size_px = 13;
+        o.hinting = mode;
+        auto prepared = r.prepare(e, o);
+        auto outline = font->outline(e, {13, mode});
+        ASSERT_TRUE(prepared && outline);
+        const Rect a = prepared->path.bounds(), b = outline->path.bounds();
+        EXPECT_EQ(a.x0, b.x0) << hinting_name(mode);
+        EXPECT_EQ(a.y0, b.y0) << hinting_name(mode);
+        EXPECT_EQ(a.x1, b.x1) << hinting_name(mode);
+        EXPECT_EQ(a.y1, b.y1) << hinting_name(mode);
+        std::vector<std::uint8_t> pixels(
+            static_cast<std::size_t>(prepared->box.width) * static_cast<std::size_t>(prepared->box.height));
+        ASSERT_TRUE(r.draw(*prepared, {pixels.data(), prepared->box.width, prepared->box.height,
+                                       prepared->box.width}));
+        masks.push_back(pixels);
+    }
+    EXPECT_NE(masks[0], masks[1]) << "light hinting must change 13 px pixels";
+}
+
+// --- Embedded bitmap strikes (fonts-test/bitmap-strike: a 16 ppem 1-bit strike with A and B, a
+// 20 ppem 8-bit strike with A; the bitmaps are patterns, not the outlines' rectangles) -----------
+
+const std::string kStrikeFont = BEZEL_FONTS_DIR "/bitmap-strike/BitmapStrike.ttf";
+
+// The make_font.py patterns: A at 16 ppem an 8x10 checkerboard, A at 20 ppem a 10x12 ramp.
+std::vector<std::uint8_t> checkerboard() {
+    std::vector<std::uint8_t> v;
+    for (int y = 0; y < 10; ++y)
+        for (int x = 0; x < 8; ++x) v.push_back((x + y) % 2 ? 255 : 0);
+    return v;
+}
+std::vector<std::uint8_t> ramp() {
+    std::vector<std::uint8_t> v;
+    for (int y = 0; y < 12; ++y)
+        for (int x = 0; x < 10; ++x) v.push_back(static_cast<std::uint8_t>(x * 255 / 9));
+    return v;
+}
+
+TEST(BitmapStrikes, FontReadsMonochromeAndGrayStrikesAtTheirOwnSize) {
+    auto font = Font::open(kStrikeFont);
+    ASSERT_TRUE(font) << font.error().message;
+    EXPECT_TRUE(font->has_bitmap_strikes());
+    const GlyphId a = font->glyph_for_char(U'A').value(), b = font->glyph_for_char(U'B').value();
+    auto mono = font->strike_bitmap(a, 16);
+    ASSERT_TRUE(mono) << mono.error().message;
+    ASSERT_TRUE(mono->has_value());
+    const StrikeBitmap& m = **mono;
+    EXPECT_EQ(m.bit_depth, 1);
+    EXPECT_EQ(m.ppem, 16);
+    EXPECT_EQ(m.width, 8);
+    EXPECT_EQ(m.height, 10);
+    EXPECT_EQ(m.left, 1);
+    EXPECT_EQ(m.top, 10);
+    EXPECT_EQ(m.advance_px, 11);
+    EXPECT_EQ(m.coverage, checkerboard());
+    auto gray = font->strike_bitmap(a, 20);
+    ASSERT_TRUE(gray && gray->has_value());
+    EXPECT_EQ((*gray)->bit_depth, 8);
+    EXPECT_EQ((*gray)->coverage, ramp());
+    // No strike of 17 ppem (never a scaled strike), no image of B in the 20 ppem strike.
+    auto none = font->strike_bitmap(a, 17);
+    ASSERT_TRUE(none);
+    EXPECT_FALSE(none->has_value());
+    auto missing = font->strike_bitmap(b, 20);
+    ASSERT_TRUE(missing);
+    EXPECT_FALSE(missing->has_value());
+    auto bad = font->strike_bitmap(a, -3);
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error().message, kStrikeFont + ": font size -3 px out of range (0, 16384]");
+    auto dejavu = Font::open(kDejaVu);
+    ASSERT_TRUE(dejavu);
+    EXPECT_FALSE(dejavu->has_bitmap_strikes());
+}
+
+TEST(BitmapStrikes, RasterizerDrawsTheStrikeOnlyWhenAsked) {
+    auto font = Font::open(kStrikeFont);
+    ASSERT_TRUE(font);
+    GlyphRasterizer r(*font);
+    const GlyphId a = font->glyph_for_char(U'A').value();
+    GlyphRenderOptions o;
+    o.size_px = 16;
+    // Off by default: the outline (a 500x700-unit rectangle, 8x11.2 px: solid ink).
+    auto outline = r.prepare(a, o);
+    ASSERT_TRUE(outline);
+    EXPECT_FALSE(outline->box.bitmap_strike);
+    EXPECT_EQ(outline->box.height, 12);
+    o.embedded_bitmaps = true;
+    auto strike = r.prepare(a, o);
+    ASSERT_TRUE(strike) << strike.error().message;
+    EXPECT_TRUE(strike->box.bitmap_strike);
+    EXPECT_EQ(strike->box.left, 1);
+    EXPECT_EQ(strike->box.top, 10);
+    EXPECT_EQ(strike->box.advance_px, 11);
+    std::vector<std::uint8_t> pixels(80, 7);
+    ASSERT_TRUE(r.draw(*strike, {pixels.data(), 8, 10, 8}));
+    EXPECT_EQ(pixels, checkerboard());
+    // The whole pixel nearest the pen; hinting and slant do not apply to it.
+    o.offset_px = {0.6, 0.4};
+    o.hinting = Hinting::Full;
+    o.slant = 0.3;
+    auto moved = r.prepare(a, o);
+    ASSERT_TRUE(moved);
+    EXPECT_EQ(moved->box.left, 2);
+    EXPECT_EQ(moved->box.top, 10);
+    // LCD: each coverage byte on all three subpixels, no padding.
+    o.offset_px = {};
+    o.fill.format = CoverageFormat::Lcd;
+    std::vector<std::uint8_t> lcd(3 * 80, 7);
+    auto box = r.render(a, o, {lcd.data(), 24, 10, 24});
+    ASSERT_TRUE(box) << box.error().message;
+    EXPECT_EQ(box->width, 8);
+    for (std::size_t i = 0; i < 80; ++i) {
+        EXPECT_EQ(lcd[3 * i], checkerboard()[i]);
+        EXPECT_EQ(lcd[3 * i + 2], checkerboard()[i]);
+    }
+    // At a size without a strike, and for a glyph not in the strike: the outline.
+    o = GlyphRenderOptions{};
+    o.embedded_bitmaps = true;
+    o.size_px = 20;
+    auto b = r.prepare(font->glyph_for_char(U'B').value(), o);
+    ASSERT_TRUE(b);
+    EXPECT_FALSE(b->box.bitmap_strike);
+    o.size_px = 16.5;
+    auto between = r.prepare(a, o);
+    ASSERT_TRUE(between);
+    EXPECT_FALSE(between->box.bitmap_strike);
+}
+
+TEST(BitmapStrikes, CacheKeysTheStrikeChoice) {
+    auto font = Font::open(kStrikeFont);
+    ASSERT_TRUE(font);
+    GlyphRasterizer r(*font);
+    GlyphCache cache;
+    const GlyphId a = font->glyph_for_char(U'A').value();
+    GlyphRenderOptions o;
+    o.size_px = 20;
+    auto outline = cache.get(r, a, o);
+    o.embedded_bitmaps = true;
+    auto strike = cache.get(r, a, o);
+    ASSERT_TRUE(outline && strike);
+    EXPECT_EQ(cache.stats().misses, 2u);
+    EXPECT_FALSE((*outline)->box.bitmap_strike);
+    EXPECT_TRUE((*strike)->box.bitmap_strike);
+    EXPECT_EQ(std::vector<std::uint8_t>((*strike)->mask.data, (*strike)->mask.data + 120), ramp());
+}
+
 }  // namespace
 }  // namespace bezel

@@ -37,6 +37,7 @@ struct GlyphArgs {
     std::string foreground, background;   // picture colours ("": black on white)
     bool coverage = false;                // --coverage: PNG/PGM of the coverage itself
     int margin_px = 0;                    // --margin
+    bool embedded_bitmaps = false;        // --embedded-bitmaps
 };
 
 const std::string kGlyphCommand = "bezel glyph";
@@ -90,6 +91,7 @@ int run_glyph(GlyphArgs& args) {
     GlyphRenderOptions options;
     options.size_px = args.font.size_px;
     options.hinting = hinting_of(args.font);
+    options.embedded_bitmaps = args.embedded_bitmaps;
     options.slant = args.slant;
     options.bold = args.bold;
     options.offset_px = *offset;
@@ -212,6 +214,9 @@ Command add_glyph_command(CLI::App& app) {
         "Colour glyphs (COLRv1, COLRv0, CBDT, sbix) are drawn in colour (--palette,\n"
         "--custom-palette; text-colour entries take --foreground), boxed around their paint;\n"
         "SVG glyphs are drawn from their outlines, with a warning.\n"
+        "--embedded-bitmaps draws a glyph from the font's monochrome or gray bitmap strike\n"
+        "(EBDT) when it has one of exactly --font-size pixels per em holding the glyph, at the\n"
+        "whole pixel nearest the pen; other glyphs and sizes are drawn from their outlines.\n"
         "Formats: ascii (default; one character per pixel, per subpixel with --lcd; a colour\n"
         "glyph's alpha); json, an array with one object per glyph: gid, name, char and\n"
         "code_point (when known), size, left, top, width (pixels), height, advance, mode\n"
@@ -262,6 +267,9 @@ Command add_glyph_command(CLI::App& app) {
                     "png/pgm: empty pixels around the glyphs on every side (default 0)")
         ->type_name("PX")
         ->check(in_range(0.0, static_cast<double>(kMaxGlyphMarginPx)));
+    cmd->add_flag("--embedded-bitmaps", args->embedded_bitmaps,
+                  "Draw glyphs from the font's monochrome/gray bitmap strike of exactly "
+                  "--font-size ppem where it has one (default: outlines)");
     add_compression_option(*cmd, args->png);
     return Command{cmd, [args] { return run_glyph(*args); }};
 }

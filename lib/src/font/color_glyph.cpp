@@ -92,27 +92,6 @@ bool svg_has_glyph(FT_Face face, GlyphId gid) {
     return false;
 }
 
-// Makes the face's strike size object current for its lifetime, then the face's own size again.
-class StrikeSizeScope {
-public:
-    explicit StrikeSizeScope(FontImpl& impl) : face_(impl.face.get()), saved_(face_->size) {
-        if (impl.strike_size == nullptr && FT_New_Size(face_, &impl.strike_size) != 0)
-            impl.strike_size = nullptr;
-        if (impl.strike_size != nullptr && FT_Activate_Size(impl.strike_size) == 0) active_ = true;
-    }
-    ~StrikeSizeScope() {
-        if (active_ && saved_ != nullptr) FT_Activate_Size(saved_);
-    }
-    StrikeSizeScope(const StrikeSizeScope&) = delete;
-    StrikeSizeScope& operator=(const StrikeSizeScope&) = delete;
-    bool ok() const { return active_; }
-
-private:
-    FT_Face face_;
-    FT_Size saved_;
-    bool active_ = false;
-};
-
 bool has_bitmap_tables(FT_Face face) {
     return face->num_fixed_sizes > 0 && (has_table(face, TTAG_CBDT) || has_table(face, TTAG_sbix));
 }
@@ -188,7 +167,7 @@ ColorFormat color_format(Font& font, GlyphId gid) {
         if (colr->v0_layers(gid)) return ColorFormat::ColrV0;
     }
     if (has_bitmap_tables(face)) {
-        StrikeSizeScope scope(impl);
+        font_detail::StrikeSizeScope scope(impl);
         if (scope.ok()) {
             for (int i = 0; i < face->num_fixed_sizes; ++i)
                 if (FT_Select_Size(face, i) == 0 && strike_has_image(face, gid))
@@ -305,7 +284,7 @@ Expected<ColorBitmap> load_color_bitmap(Font& font, GlyphId gid, double size_px)
         return Error{label + ": the font's bitmap strike " + std::to_string(strike) +
                      " has no pixel size"};
 
-    StrikeSizeScope scope(impl);
+    font_detail::StrikeSizeScope scope(impl);
     if (!scope.ok()) return Error{label + ": cannot make a size object for the bitmap strikes"};
     if (FT_Error e = FT_Select_Size(face, strike))
         return Error{label + ": cannot select the bitmap strike: " + ft_error_text(e)};

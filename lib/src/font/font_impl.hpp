@@ -5,12 +5,15 @@
 #include <memory>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
+#include FT_SIZES_H
 
 #include "bezel/font.hpp"
+#include "bezel/font_face.hpp"
 #include "font/colr_table.hpp"
 
 namespace bezel {
@@ -41,6 +44,12 @@ struct FreeTypeRenderCache {
     int outline_flags = 0;
 };
 
+// Whether `face` has monochrome or gray bitmap strikes (bitmap_strike.cpp).
+bool find_gray_strikes(FT_Face face);
+
+// A new id for Font::instance_id(), never given out before in this process.
+std::uint64_t next_instance_id();
+
 // A number in an error message ("%g": 6 significant digits, no trailing zeros).
 std::string format_number(double v);
 
@@ -53,12 +62,19 @@ Expected<std::vector<VariationSetting>> named_instance_coordinates(const std::st
 }  // namespace font_detail
 
 struct Font::Impl {
-    // Declaration order is destruction order reversed: the face goes before its library.
+    // Declaration order is destruction order reversed: the FreeType face goes before its library,
+    // and both before the FontFace that holds the bytes they read.
+    explicit Impl(FontFace f) : source(std::move(f)) {}
+    FontFace source;
     font_detail::LibraryPtr library;
     font_detail::FacePtr face;
     std::string file;
     int face_index = 0;
     int face_count = 0;
+    // Font::instance_id(): the id of the current variation coordinates, and the last few
+    // coordinates set with theirs, so that switching back to an instance finds its id again.
+    std::uint64_t instance_id = 0;
+    std::vector<std::pair<std::vector<FT_Fixed>, std::uint64_t>> recent_instances;
     // The 26.6 char size last set with FT_Set_Char_Size (hinted loads only), 0 when none, so a
     // run of glyphs at one size sets it once.
     FT_F26Dot6 char_size_26_6 = 0;
@@ -72,12 +88,41 @@ struct Font::Impl {
     // leaves the face's own size — char_size_26_6, the hinted loads' — untouched. Owned by the
     // face (FT_Done_Face frees it); null until the first colour bitmap.
     FT_Size strike_size = nullptr;
+    // The face has monochrome or gray bitmap strikes (EBLC or bloc with fixed sizes), found at
+    // open: GlyphRasterizer asks per glyph, so the table lookup is done once.
+    bool gray_strikes = false;
 };
 
 namespace font_detail {
 // A Font's Impl, for the module's free functions (render_with_freetype).
 struct Access {
     static Font::Impl& impl(Font& font) { return *font.impl_; }
+};
+
+// Font::Impl by a name the module's free code may use (the type itself is private to Font).
+using FontImpl = std::remove_reference_t<decltype(Access::impl(std::declval<Font&>()))>;
+
+// Makes the face's strike size object (Font::Impl::strike_size) current for its lifetime, then
+// the face's own size again: selecting a bitmap strike (colour or gray) leaves the size the
+// hinted outline loads set untouched.
+class StrikeSizeScope {
+public:
+    explicit StrikeSizeScope(FontImpl& impl) : face_(impl.face.get()), saved_(face_->size) {
+        if (impl.strike_size == nullptr && FT_New_Size(face_, &impl.strike_size) != 0)
+            impl.strike_size = nullptr;
+        if (impl.strike_size != nullptr && FT_Activate_Size(impl.strike_size) == 0) active_ = true;
+    }
+    ~StrikeSizeScope() {
+        if (active_ && saved_ != nullptr) FT_Activate_Size(saved_);
+    }
+    StrikeSizeScope(const StrikeSizeScope&) = delete;
+    StrikeSizeScope& operator=(const StrikeSizeScope&) = delete;
+    bool ok() const { return active_; }
+
+private:
+    FT_Face face_;
+    FT_Size saved_;
+    bool active_ = false;
 };
 }  // namespace font_detail
 

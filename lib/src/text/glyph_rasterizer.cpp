@@ -103,7 +103,7 @@ Status freetype_box(GlyphId gid, const Rect& b, const GlyphRenderOptions& o, Gly
 
 }  // namespace
 
-GlyphRasterizer::GlyphRasterizer(Font& font) : font_(&font), tables_(color_tables(font)) {}
+GlyphRasterizer::GlyphRasterizer(Font& font) : font_(font.impl_), tables_(color_tables(font)) {}
 
 Expected<PreparedGlyph> GlyphRasterizer::prepare(GlyphId gid, const GlyphRenderOptions& options) {
     if (auto ok = check_options(gid, options); !ok) return ok.error();
@@ -112,7 +112,12 @@ Expected<PreparedGlyph> GlyphRasterizer::prepare(GlyphId gid, const GlyphRenderO
         const ColorFormat format = color_format(gid);
         if (drawn_in_color(format)) return prepare_color(gid, format, options);
     }
-    auto outline = font_->outline(gid, {options.size_px, options.hinting});
+    if (options.embedded_bitmaps && font_.has_bitmap_strikes()) {
+        auto strike = font_.strike_bitmap(gid, options.size_px);
+        if (!strike) return strike.error();
+        if (*strike) return prepare_strike(gid, std::move(**strike), options);
+    }
+    auto outline = font_.outline(gid, {options.size_px, options.hinting});
     if (!outline) return outline.error();
     PreparedGlyph glyph;
     glyph.gid = gid;
@@ -154,6 +159,39 @@ Expected<PreparedGlyph> GlyphRasterizer::prepare(GlyphId gid, const GlyphRenderO
     return glyph;
 }
 
+// A strike's bitmap at the whole pixel nearest the pen: its box is the bitmap's own, moved by
+// the rounded offset (no LCD padding: the strike has no subpixel detail to filter).
+Expected<PreparedGlyph> GlyphRasterizer::prepare_strike(GlyphId gid, StrikeBitmap strike,
+                                                        const GlyphRenderOptions& options) {
+    PreparedGlyph glyph;
+    glyph.gid = gid;
+    glyph.options = options;
+    glyph.box.bitmap_strike = true;
+    glyph.box.advance_px = strike.advance_px;
+    if (strike.width > 0 && strike.height > 0) {
+        const double dx = std::floor(options.offset_px.x + 0.5);
+        const double dy = std::floor(options.offset_px.y + 0.5);
+        glyph.box.left = strike.left + static_cast<int>(dx);
+        glyph.box.top = strike.top - static_cast<int>(dy);
+        glyph.box.width = strike.width;
+        glyph.box.height = strike.height;
+    }
+    glyph.strike = std::make_shared<const StrikeBitmap>(std::move(strike));
+    return glyph;
+}
+
+Status GlyphRasterizer::draw_strike(const PreparedGlyph& glyph, const MaskView& target) {
+    const StrikeBitmap& s = *glyph.strike;
+    const int repeat = is_lcd(glyph.options) ? 3 : 1;
+    for (int y = 0; y < glyph.box.height; ++y) {
+        std::uint8_t* out = target.row(y);
+        const std::uint8_t* in = s.coverage.data() + static_cast<std::size_t>(y) * s.width;
+        for (int x = 0; x < glyph.box.width; ++x)
+            for (int k = 0; k < repeat; ++k) *out++ = in[x];
+    }
+    return ok_status();
+}
+
 Status GlyphRasterizer::draw(const PreparedGlyph& glyph, const MaskView& target) {
     const GlyphBox& box = glyph.box;
     const GlyphRenderOptions& o = glyph.options;
@@ -165,6 +203,7 @@ Status GlyphRasterizer::draw(const PreparedGlyph& glyph, const MaskView& target)
                      std::to_string(box.width * bytes_per_px) + "x" + std::to_string(box.height) +
                      " bytes"};
     if (box.color) return draw_color_alpha(glyph, target);
+    if (glyph.strike) return draw_strike(glyph, target);
     const Affine to_bitmap =
         Affine::translate({o.offset_px.x - box.left, o.offset_px.y + box.top});
     const MaskView corner = target.sub(0, 0, box.width * bytes_per_px, box.height);
