@@ -27,23 +27,24 @@ using image_detail::with_quad;
 
 namespace {
 
-// One destination pixel blended with the source colour (already decoded) at alphas per channel
-// (one alpha for gray masks, three for LCD); `a` is the alpha for the alpha channel.
-inline void blend_pixel(const SrgbTables& t, Rgba8& d, const float src[3], const float alpha[3],
-                        float a) {
-    if (d.a == 255) {
+// One destination pixel, its straight channels at r, g, b and a, blended with the source colour
+// (already decoded) at alphas per channel (one alpha for gray masks, three for LCD); `a` is the
+// alpha for the alpha channel. In place, so a straight target is blended in its own memory.
+inline void blend_channels(const SrgbTables& t, std::uint8_t* r, std::uint8_t* g, std::uint8_t* b,
+                           std::uint8_t* da_byte, const float src[3], const float alpha[3],
+                           float a) {
+    std::uint8_t* ch[3] = {r, g, b};
+    if (*da_byte == 255) {
         // Opaque destination: the common case, a lerp per channel.
-        std::uint8_t* ch[3] = {&d.r, &d.g, &d.b};
         for (int k = 0; k < 3; ++k) {
             float dl = t.decode[*ch[k]];
             *ch[k] = t.enc(dl + (src[k] - dl) * alpha[k]);
         }
         return;
     }
-    float da = d.a / 255.0f;
+    float da = *da_byte / 255.0f;
     float out_a = a + da * (1.0f - a);
     if (out_a <= 0.0f) return;
-    std::uint8_t* ch[3] = {&d.r, &d.g, &d.b};
     for (int k = 0; k < 3; ++k) {
         float dl = t.decode[*ch[k]];
         // Per-channel alphas (LCD) weight each channel by its own α, the alpha channel by `a`.
@@ -51,7 +52,26 @@ inline void blend_pixel(const SrgbTables& t, Rgba8& d, const float src[3], const
         float norm = alpha[k] + da * (1.0f - alpha[k]);
         *ch[k] = t.enc(norm > 0.0f ? mixed / norm : 0.0f);
     }
-    d.a = static_cast<std::uint8_t>(std::lround(out_a * 255.0f));
+    *da_byte = static_cast<std::uint8_t>(std::lround(out_a * 255.0f));
+}
+
+inline void blend_pixel(const SrgbTables& t, Rgba8& d, const float src[3], const float alpha[3],
+                        float a) {
+    blend_channels(t, &d.r, &d.g, &d.b, &d.a, src, alpha, a);
+}
+
+// The same on a pixel of the target's layout: in place for straight formats, through
+// load/store (un- and re-premultiplied) for premultiplied ones.
+template <typename Layout>
+inline void blend_at(const SrgbTables& t, std::uint8_t* p, const float src[3],
+                     const float alpha[3], float a) {
+    if (Layout::kPremultiplied) {
+        Rgba8 px = Layout::load(p);
+        blend_pixel(t, px, src, alpha, a);
+        Layout::store(p, px);
+    } else {
+        blend_channels(t, p + Layout::kR, p + 1, p + Layout::kB, p + 3, src, alpha, a);
+    }
 }
 
 // The one-channel mix of a Gray8 target: the opaque case of blend_pixel.
@@ -150,9 +170,7 @@ void mask_onto_quad(const PixelView& target, ConstMaskView mask, const Clip& c, 
             }
             const float a = curve[cov] * color_a;
             const float alpha[3] = {a, a, a};
-            Rgba8 px = Layout::load(d);
-            blend_pixel(t, px, src, alpha, a);
-            Layout::store(d, px);
+            blend_at<Layout>(t, d, src, alpha, a);
         }
     }
 }
@@ -171,13 +189,12 @@ void mask_onto_gray(const PixelView& page, ConstMaskView mask, const Clip& c, in
     thread_local bool lut_valid = false;
     thread_local std::array<std::uint8_t, 256> lut;
     const std::uint8_t under = page.row(y + c.y0)[x + c.x0];
-    const std::uint8_t full = color_a == 255 ? gray : blend_gray(t, under, src, curve[255] * ca);
     if (!lut_valid || lut_dst != under || lut_gray != gray || lut_a != color_a ||
         !lut_curve.same_as(curve)) {
         lut[0] = under;
         for (int cov = 1; cov < 255; ++cov)
             lut[cov] = blend_gray(t, under, src, curve[static_cast<std::uint8_t>(cov)] * ca);
-        lut[255] = full;
+        lut[255] = color_a == 255 ? gray : blend_gray(t, under, src, curve[255] * ca);
         lut_dst = under;
         lut_gray = gray;
         lut_a = color_a;
@@ -214,9 +231,7 @@ void lcd_onto_quad(const PixelView& target, ConstMaskView mask, const Clip& c, i
                                     curve[cb] * color_a};
             // The alpha channel takes the strongest subpixel: the pixel is at least that covered.
             const float a = std::max({alpha[0], alpha[1], alpha[2]});
-            Rgba8 px = Layout::load(d);
-            blend_pixel(t, px, src, alpha, a);
-            Layout::store(d, px);
+            blend_at<Layout>(t, d, src, alpha, a);
         }
     }
 }
@@ -252,9 +267,7 @@ void image_onto_quad(const PixelView& target, ConstPixelView source, const Clip&
             const float a = (sp.a / 255.0f) * opacity;
             const float src[3] = {t.decode[sp.r], t.decode[sp.g], t.decode[sp.b]};
             const float alpha[3] = {a, a, a};
-            Rgba8 px = Layout::load(d);
-            blend_pixel(t, px, src, alpha, a);
-            Layout::store(d, px);
+            blend_at<Layout>(t, d, src, alpha, a);
         }
     }
 }

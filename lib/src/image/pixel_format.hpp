@@ -26,6 +26,7 @@ inline std::uint8_t premultiply(std::uint8_t c, std::uint8_t a) {
 template <int R, int B, bool Premultiplied>
 struct Quad {
     static constexpr bool kPremultiplied = Premultiplied;
+    static constexpr int kR = R, kB = B;
     static Rgba8 load(const std::uint8_t* p) {
         if (!Premultiplied) return {p[R], p[1], p[B], p[3]};
         const std::uint8_t a = p[3];
