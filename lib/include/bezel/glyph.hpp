@@ -96,7 +96,8 @@ struct GlyphRenderOptions {
     // How the outline is filled: fill rule, overlap mode, flattening, gray or LCD coverage and
     // the LCD order and filter, as for any Rasterizer fill. Accurate overlap is chosen
     // automatically for glyphs that mark overlapping contours (Accumulate here never forces plain
-    // accumulation on them). `fill.origin` must be zero: `offset_px` places the pen.
+    // accumulation on them). `fill.origin` must be zero: `offset_px` places the pen; and
+    // `fill.combine` Replace: a glyph bitmap is the glyph's own coverage.
     FillOptions fill;
 };
 
