@@ -175,12 +175,16 @@ void mask_onto_quad(const PixelView& target, ConstMaskView mask, const Clip& c, 
     }
 }
 
-// A gray mask onto a Gray8 target, in the gray `gray` of alpha color_a (255: opaque).
+// A gray mask onto a Gray8 target, in the gray `gray` of alpha color_a; Opaque: color_a is 255,
+// so α = curve[coverage] with no product (the same float: curve[c]·1.0f is curve[c]) and full
+// coverage writes the gray itself.
+template <bool Opaque>
 void mask_onto_gray(const PixelView& page, ConstMaskView mask, const Clip& c, int x, int y,
                     std::uint8_t gray, std::uint8_t color_a, const CoverageCurve& curve) {
     const SrgbTables& t = srgb_tables();
     const float src = t.decode[gray];
     const float ca = color_a / 255.0f;
+    auto alpha = [&](std::uint8_t cov) { return Opaque ? curve[cov] : curve[cov] * ca; };
     // As the 4-byte formats' CoverageLut, for one byte: the background under the mask's first
     // visible pixel, blended at each coverage (the same float steps as blend_pixel's opaque
     // case, so a gray page and an RGBA page of the same grays agree exactly).
@@ -193,8 +197,8 @@ void mask_onto_gray(const PixelView& page, ConstMaskView mask, const Clip& c, in
         !lut_curve.same_as(curve)) {
         lut[0] = under;
         for (int cov = 1; cov < 255; ++cov)
-            lut[cov] = blend_gray(t, under, src, curve[static_cast<std::uint8_t>(cov)] * ca);
-        lut[255] = color_a == 255 ? gray : blend_gray(t, under, src, curve[255] * ca);
+            lut[cov] = blend_gray(t, under, src, alpha(static_cast<std::uint8_t>(cov)));
+        lut[255] = Opaque ? gray : blend_gray(t, under, src, alpha(255));
         lut_dst = under;
         lut_gray = gray;
         lut_a = color_a;
@@ -208,10 +212,19 @@ void mask_onto_gray(const PixelView& page, ConstMaskView mask, const Clip& c, in
             const std::uint8_t cov = m[mx];
             if (cov == 0) continue;
             if (*d == lut_dst) *d = lut[cov];
-            else if (cov == 255 && color_a == 255) *d = gray;
-            else *d = blend_gray(t, *d, src, curve[cov] * ca);
+            else if (Opaque && cov == 255) *d = gray;
+            else *d = blend_gray(t, *d, src, alpha(cov));
         }
     }
+}
+
+// blend_mask onto a Gray8 target, after its checks.
+void mask_onto_gray(const PixelView& page, ConstMaskView mask, int x, int y, Rgba8 color,
+                    const CoverageCurve& curve) {
+    const Clip c = clip(page.width, page.height, mask.width, mask.height, x, y);
+    if (c.empty()) return;
+    if (color.a == 255) mask_onto_gray<true>(page, mask, c, x, y, luma(color), 255, curve);
+    else mask_onto_gray<false>(page, mask, c, x, y, luma(color), color.a, curve);
 }
 
 template <typename Layout>
@@ -296,12 +309,15 @@ void blend_mask(const PixelView& target, ConstMaskView mask, int x, int y, Rgba8
 void blend_mask(const PixelView& target, ConstMaskView mask, int x, int y, Rgba8 color,
                 const CoverageCurve& curve) {
     if (target.data == nullptr || mask.data == nullptr || color.a == 0) return;
+    if (target.format == PixelFormat::Gray8) {
+        mask_onto_gray(target, mask, x, y, color, curve);
+        return;
+    }
     const Clip c = clip(target.width, target.height, mask.width, mask.height, x, y);
     if (c.empty()) return;
-    if (!with_quad(target.format, [&](auto layout) {
-            mask_onto_quad<decltype(layout)>(target, mask, c, x, y, color, curve);
-        }))
-        mask_onto_gray(target, mask, c, x, y, luma(color), color.a, curve);
+    with_quad(target.format, [&](auto layout) {
+        mask_onto_quad<decltype(layout)>(target, mask, c, x, y, color, curve);
+    });
 }
 
 void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color) {
@@ -319,8 +335,9 @@ void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8
 
 void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8_t gray,
                      const CoverageCurve& curve) {
-    blend_mask(PixelView{page.data, page.width, page.height, page.stride, PixelFormat::Gray8},
-               mask, x, y, Rgba8{gray, gray, gray, 255}, curve);
+    if (page.data == nullptr || mask.data == nullptr) return;
+    mask_onto_gray(PixelView{page.data, page.width, page.height, page.stride, PixelFormat::Gray8},
+                   mask, x, y, Rgba8{gray, gray, gray, 255}, curve);
 }
 
 void blend_lcd_mask(const PixelView& target, ConstMaskView mask, int x, int y, Rgba8 color,

@@ -192,9 +192,9 @@ Status TextRenderer::draw_glyphs(const TextLayout& layout, const TextRenderOptio
     const bool subpixel_y = options.hinting == Hinting::None &&
                             (options.shape.direction == Direction::TopToBottom ||
                              options.shape.direction == Direction::BottomToTop);
-    // The cached glyph at g's pen, with its top-left pixel; null for a pen far off the page (a
-    // huge margin is refused by the size check above; this guards the int conversions) or an
-    // empty glyph.
+    // The cached glyph at g's pen, with its top-left pixel; null for an empty glyph or a pen
+    // more than 2·kMaxImageDim off the target's origin, which no glyph (at most kMaxBitmapDim
+    // wide) can carry onto a target of at most kMaxImageDim (this guards the int conversions).
     auto look_up = [&](const PlacedGlyph& g, int& x, int& y) -> Expected<const CachedGlyph*> {
         const double pen_x = g.x_px + origin.x, pen_y = g.y_px + origin.y;
         const double quarters = whole_pixel_pen
