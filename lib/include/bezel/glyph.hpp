@@ -102,7 +102,8 @@ struct GlyphRenderOptions {
 };
 
 // Where a glyph bitmap sits relative to the pen, and its size. For LCD coverage `width` counts
-// DISPLAY pixels and the bitmap has 3 bytes per pixel.
+// DISPLAY pixels and the bitmap has 3 bytes per pixel, its subpixels left to right (the panel's
+// order: raster.hpp's CoverageFormat::Lcd).
 struct GlyphBox {
     int left = 0, top = 0;        // bitmap_left / bitmap_top, as FreeType
     int width = 0, height = 0;

@@ -27,7 +27,10 @@ namespace {
 inline std::uint8_t over(std::uint8_t a, std::uint8_t b) {
     return static_cast<std::uint8_t>(a + b - (a * b + 127) / 255);
 }
-inline float over(float a, float b) { return a + b - a * b; }
+// a + b − a·b written as 1 − (1 − a)(1 − b): equal in real numbers, and in floats it stays in
+// [0, 1] for a, b in [0, 1] (each factor and their product do), where a + b − a·b can round
+// past 1.
+inline float over(float a, float b) { return 1.0f - (1.0f - a) * (1.0f - b); }
 inline std::uint8_t add(std::uint8_t a, std::uint8_t b) {
     return static_cast<std::uint8_t>(std::min(a + b, 255));
 }
