@@ -266,7 +266,9 @@ TEST_F(GlyphCli, OverlapAccurateResolvesUnmarkedOverlappingComponents) {
     EXPECT_LE(worst[1], 1);    // plain 'e': no overlap
 }
 
-TEST_F(GlyphCli, LcdRowsHoldThreeBytesPerPixelAndBgrReversesThem) {
+TEST_F(GlyphCli, LcdRowsHoldTheSubpixelsLeftToRightInThePanelsOrder) {
+    // The bytes are positions on the screen, the same for either panel; the mode names their
+    // colours, and the PPM shows each in its colour: bgr's picture is rgb's with R and B swapped.
     json gray = run_json({kDejaVu, "--char", "e", "--font-size", "16"});
     json rgb = run_json({kDejaVu, "--char", "e", "--font-size", "16", "--lcd", "rgb"});
     json bgr = run_json({kDejaVu, "--char", "e", "--font-size", "16", "--lcd", "bgr"});
@@ -276,13 +278,36 @@ TEST_F(GlyphCli, LcdRowsHoldThreeBytesPerPixelAndBgrReversesThem) {
     EXPECT_EQ(rgb[0]["width"].get<int>(), gray[0]["width"].get<int>() + 2);
     EXPECT_EQ(rgb[0]["left"].get<int>(), gray[0]["left"].get<int>() - 1);
     EXPECT_EQ(rgb[0]["top"], gray[0]["top"]);
-    const int w = rgb[0]["width"].get<int>();
-    for (int y = 0; y < rgb[0]["height"].get<int>(); ++y) {
-        const std::string r = rgb[0]["rows"][y], b = bgr[0]["rows"][y];
+    const int w = rgb[0]["width"].get<int>(), h = rgb[0]["height"].get<int>();
+    int colourful = 0;
+    for (int y = 0; y < h; ++y) {
+        const std::string r = rgb[0]["rows"][y];
         ASSERT_EQ(r.size(), std::size_t(6 * w));
-        for (int x = 0; x < w; ++x)
-            for (int c = 0; c < 3; ++c) EXPECT_EQ(hex_byte(b, 3 * x + c), hex_byte(r, 3 * x + 2 - c));
+        EXPECT_EQ(bgr[0]["rows"][y], r);
+        for (int x = 0; x < w; ++x) colourful += hex_byte(r, 3 * x) != hex_byte(r, 3 * x + 2);
     }
+    EXPECT_GT(colourful, 4);   // so a swap would show
+    const std::string rgb_ppm = (scratch().path() / "e-rgb.ppm").string();
+    const std::string bgr_ppm = (scratch().path() / "e-bgr.ppm").string();
+    for (const auto& [order, file] : {std::pair{"rgb", rgb_ppm}, std::pair{"bgr", bgr_ppm}}) {
+        CliRun r = run({kDejaVu, "--char", "e", "--font-size", "16", "--lcd", order, "--coverage",
+                        "-o", file});
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    const std::string a = bezel::test::slurp(rgb_ppm), b = bezel::test::slurp(bgr_ppm);
+    const std::string header = "P6\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
+    ASSERT_EQ(a.substr(0, header.size()), header);
+    ASSERT_EQ(a.size(), header.size() + std::size_t(3 * w * h));
+    ASSERT_EQ(b.size(), a.size());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t at = header.size() + std::size_t(3 * (y * w + x));
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_EQ(static_cast<unsigned char>(a[at + c]),
+                          hex_byte(rgb[0]["rows"][y], 3 * x + c));
+                EXPECT_EQ(b[at + c], a[at + 2 - c]);
+            }
+        }
 }
 
 TEST_F(GlyphCli, AsciiArtHasAHeaderAndOneCharacterPerPixel) {

@@ -290,6 +290,11 @@ TEST(GlyphRasterizer, RefusesBadInput) {
     ASSERT_FALSE(moved);
     EXPECT_NE(moved.error().message.find("fill.origin"), std::string::npos);
     o.fill.origin = {};
+    o.fill.combine = CoverageCombine::Over;   // a glyph bitmap is its own coverage
+    auto combined = rasterizer.measure(gid, o);
+    ASSERT_FALSE(combined);
+    EXPECT_NE(combined.error().message.find("fill.combine"), std::string::npos);
+    o.fill.combine = CoverageCombine::Replace;
     std::uint8_t small[4] = {};
     auto box = rasterizer.render(gid, o, MaskView{small, 2, 2, 2});
     ASSERT_FALSE(box);

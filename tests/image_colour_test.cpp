@@ -3,9 +3,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "bezel/image.hpp"
 #include "image/srgb.hpp"
@@ -181,6 +185,306 @@ TEST(BlendLcdMask, EachChannelTakesItsSubpixel) {
     blend_lcd_mask(a, ConstMaskView(even, 3, 1, 3), 0, 0, kBlack, LcdOrder::Rgb);
     blend_mask(b, ConstMaskView(&gray, 1, 1, 1), 0, 0, kBlack);
     EXPECT_EQ(a, b);
+}
+
+// --- PixelView: caller-owned targets in every format ------------------------------------------
+
+constexpr PixelFormat kAllFormats[] = {PixelFormat::Gray8, PixelFormat::Rgba8, PixelFormat::Bgra8,
+                                       PixelFormat::Rgba8Premultiplied,
+                                       PixelFormat::Bgra8Premultiplied};
+
+TEST(PixelView, ByteOrderOfEveryFormat) {
+    std::uint8_t p[4];
+    const Rgba8 c{200, 100, 50, 255};
+    store_pixel(PixelFormat::Rgba8, p, c);
+    EXPECT_EQ((std::array<int, 4>{p[0], p[1], p[2], p[3]}), (std::array<int, 4>{200, 100, 50, 255}));
+    store_pixel(PixelFormat::Bgra8, p, c);
+    EXPECT_EQ((std::array<int, 4>{p[0], p[1], p[2], p[3]}), (std::array<int, 4>{50, 100, 200, 255}));
+    // Premultiplied: P = round(C·A/255).
+    store_pixel(PixelFormat::Bgra8Premultiplied, p, Rgba8{200, 100, 50, 128});
+    EXPECT_EQ((std::array<int, 4>{p[0], p[1], p[2], p[3]}), (std::array<int, 4>{25, 50, 100, 128}));
+    EXPECT_EQ(load_pixel(PixelFormat::Bgra8Premultiplied, p), (Rgba8{199, 100, 50, 128}));
+    store_pixel(PixelFormat::Rgba8Premultiplied, p, Rgba8{200, 100, 50, 0});
+    EXPECT_EQ((std::array<int, 4>{p[0], p[1], p[2], p[3]}), (std::array<int, 4>{0, 0, 0, 0}));
+    // Gray8: the luma of the encoded values; a gray stays itself.
+    store_pixel(PixelFormat::Gray8, p, Rgba8{77, 77, 77, 255});
+    EXPECT_EQ(p[0], 77);
+    EXPECT_EQ(load_pixel(PixelFormat::Gray8, p), (Rgba8{77, 77, 77, 255}));
+    store_pixel(PixelFormat::Gray8, p, Rgba8{255, 0, 0, 255});
+    EXPECT_EQ(p[0], 54);   // 0.2126·255, Rec. 709 in 8.8 fixed point
+}
+
+TEST(PixelView, EveryPremultipliedPixelRoundTripsThroughLoadAndStore) {
+    for (int a = 0; a < 256; ++a)
+        for (int c = 0; c <= a; ++c) {
+            const std::uint8_t in[4] = {static_cast<std::uint8_t>(a == 0 ? 0 : c), 0,
+                                        static_cast<std::uint8_t>(a), static_cast<std::uint8_t>(a)};
+            std::uint8_t out[4];
+            store_pixel(PixelFormat::Rgba8Premultiplied, out,
+                        load_pixel(PixelFormat::Rgba8Premultiplied, in));
+            ASSERT_EQ(std::memcmp(in, out, 4), 0) << c << "/" << a;
+        }
+}
+
+TEST(PixelView, ImageViewIsItsRgbaMemory) {
+    Image image(3, 2, Rgba8{1, 2, 3, 4});
+    image.at(2, 1) = Rgba8{9, 8, 7, 6};
+    const PixelView v = image.view();
+    EXPECT_EQ(v.format, PixelFormat::Rgba8);
+    EXPECT_EQ(v.stride, 12);
+    EXPECT_EQ(load_pixel(v.format, v.pixel(2, 1)), (Rgba8{9, 8, 7, 6}));
+    store_pixel(v.format, v.pixel(0, 1), Rgba8{5, 5, 5, 5});
+    EXPECT_EQ(image.at(0, 1), (Rgba8{5, 5, 5, 5}));
+}
+
+// The blend formula of image.hpp, written out: D straight, S decoded, α per channel, a for alpha.
+Rgba8 mixed(Rgba8 d, const float s[3], const float al[3], float a) {
+    std::uint8_t* ch[3] = {&d.r, &d.g, &d.b};
+    if (d.a == 255) {
+        for (int k = 0; k < 3; ++k) {
+            const float dl = srgb_decode(*ch[k]);
+            *ch[k] = srgb_encode(dl + (s[k] - dl) * al[k]);
+        }
+        return d;
+    }
+    const float da = d.a / 255.0f, out_a = a + da * (1.0f - a);
+    if (out_a <= 0.0f) return d;
+    for (int k = 0; k < 3; ++k) {
+        const float dl = srgb_decode(*ch[k]);
+        const float num = s[k] * al[k] + dl * da * (1.0f - al[k]);
+        const float norm = al[k] + da * (1.0f - al[k]);
+        *ch[k] = srgb_encode(norm > 0.0f ? num / norm : 0.0f);
+    }
+    d.a = static_cast<std::uint8_t>(std::lround(out_a * 255.0f));
+    return d;
+}
+std::uint8_t mixed_gray(std::uint8_t d, float s, float a) {
+    const float dl = srgb_decode(d);
+    return srgb_encode(dl + (s - dl) * a);
+}
+
+// Straight pixels, some opaque, some translucent, some transparent, as a random page.
+struct Scene {
+    int w = 13, h = 9;
+    std::vector<Rgba8> px;
+};
+Scene random_scene(std::uint32_t& seed) {
+    auto next = [&seed] { return static_cast<std::uint8_t>((seed = seed * 1664525u + 1013904223u) >> 24); };
+    Scene s;
+    const Rgba8 bg{next(), next(), next(), 255};
+    for (int i = 0; i < s.w * s.h; ++i) {
+        const std::uint8_t kind = next();
+        s.px.push_back(kind < 128 ? bg : kind < 200 ? Rgba8{next(), next(), next(), 255}
+                                   : kind < 240 ? Rgba8{next(), next(), next(), next()}
+                                                : Rgba8{0, 0, 0, 0});
+    }
+    return s;
+}
+
+// A target of the scene in `format`, rows `pad` bytes apart beyond the pixels, bottom-up when
+// `flip`; the padding bytes hold 0xA5, which no blend may touch.
+struct Target {
+    std::vector<std::uint8_t> memory;
+    PixelView view;
+};
+Target make_target(const Scene& s, PixelFormat format, int pad, bool flip) {
+    const int bpp = bytes_per_pixel(format);
+    const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(s.w) * bpp + pad;
+    Target t;
+    t.memory.assign(static_cast<std::size_t>(row * s.h), 0xA5);
+    std::uint8_t* first = flip ? t.memory.data() + row * (s.h - 1) : t.memory.data();
+    t.view = PixelView{first, s.w, s.h, flip ? -row : row, format};
+    for (int y = 0; y < s.h; ++y)
+        for (int x = 0; x < s.w; ++x) {
+            Rgba8 c = s.px[static_cast<std::size_t>(y * s.w + x)];
+            if (format == PixelFormat::Gray8) c = Rgba8{c.g, c.g, c.g, 255};
+            store_pixel(format, t.view.pixel(x, y), c);
+        }
+    return t;
+}
+
+std::vector<std::uint8_t> random_mask(std::uint32_t& seed, int n) {
+    std::vector<std::uint8_t> m(static_cast<std::size_t>(n));
+    for (auto& v : m) {
+        const std::uint32_t r = (seed = seed * 1664525u + 1013904223u) >> 24;
+        v = r < 60 ? 0 : r > 200 ? 255 : static_cast<std::uint8_t>(r);
+    }
+    return m;
+}
+
+enum class What { Mask, Lcd, Image };
+
+// Blends one random source in every format and checks each pixel against the formula applied to
+// the pixel as load_pixel reads it, stored as store_pixel writes it.
+void check_every_format(What what, std::uint32_t seed) {
+    for (int round = 0; round < 40; ++round) {
+        const Scene scene = random_scene(seed);
+        const int mw = 6, mh = 5;
+        const int x = static_cast<int>(seed % 17) - 4, y = static_cast<int>((seed >> 8) % 13) - 4;
+        const std::vector<std::uint8_t> m = random_mask(seed, mw * mh * 4);
+        const Rgba8 color{m[1], m[2], m[3], round % 3 == 0 ? m[4] : std::uint8_t(255)};
+        const LcdOrder order = round % 2 ? LcdOrder::Bgr : LcdOrder::Rgb;
+        auto curve = coverage_curve(color, {250, 250, 240, 255}, {});
+        ASSERT_TRUE(curve.ok());
+        // The image source: premultiplied RGBA made from the mask bytes.
+        std::vector<std::uint8_t> src(m.size());
+        for (std::size_t i = 0; i < m.size(); i += 4) {
+            const std::uint8_t a = m[i + 3];
+            for (int k = 0; k < 3; ++k)
+                src[i + k] = static_cast<std::uint8_t>((m[(i + 4 * k + 5) % m.size()] * a + 127) / 255);
+            src[i + 3] = a;
+        }
+        const ConstPixelView source(src.data(), mw, mh, 4 * mw, PixelFormat::Rgba8Premultiplied);
+        for (PixelFormat format : kAllFormats)
+            for (int pad : {0, 3})
+                for (bool flip : {false, true}) {
+                    Target t = make_target(scene, format, pad, flip);
+                    const Target before = make_target(scene, format, pad, flip);
+                    switch (what) {
+                        case What::Mask:
+                            blend_mask(t.view, ConstMaskView(m.data(), mw, mh, mw), x, y, color, *curve);
+                            break;
+                        case What::Lcd:
+                            blend_lcd_mask(t.view, ConstMaskView(m.data(), 3 * mw, mh, 3 * mw), x, y,
+                                           color, order, *curve);
+                            break;
+                        case What::Image: blend_image(t.view, source, x, y, 0.75f); break;
+                    }
+                    const std::size_t row = static_cast<std::size_t>(std::abs(t.view.stride));
+                    for (std::size_t i = 0; i < t.memory.size(); ++i) {
+                        if (static_cast<int>(i % row) >= scene.w * bytes_per_pixel(format)) {
+                            ASSERT_EQ(t.memory[i], 0xA5) << "padding written";
+                        }
+                    }
+                    for (int py = 0; py < scene.h; ++py)
+                        for (int px = 0; px < scene.w; ++px) {
+                            const Rgba8 d = load_pixel(format, before.view.pixel(px, py));
+                            const int mx = px - x, my = py - y;
+                            std::uint8_t want[4];
+                            store_pixel(format, want, d);
+                            if (mx >= 0 && my >= 0 && mx < mw && my < mh) {
+                                float al[3] = {0, 0, 0}, a = 0;
+                                Rgba8 s = color;
+                                bool skip = false;
+                                const float ca = color.a / 255.0f;
+                                if (what == What::Mask) {
+                                    const std::uint8_t cov = m[static_cast<std::size_t>(my * mw + mx)];
+                                    a = (*curve)[cov] * ca;
+                                    al[0] = al[1] = al[2] = a;
+                                    skip = cov == 0;
+                                } else if (what == What::Lcd) {
+                                    const std::uint8_t* p = &m[static_cast<std::size_t>(my * 3 * mw + 3 * mx)];
+                                    const int r_at = order == LcdOrder::Bgr ? 2 : 0;
+                                    const std::uint8_t cv[3] = {p[r_at], p[1], p[2 - r_at]};
+                                    for (int k = 0; k < 3; ++k) al[k] = (*curve)[cv[k]] * ca;
+                                    a = std::max({al[0], al[1], al[2]});
+                                    if (format == PixelFormat::Gray8)
+                                        a = ((*curve)[p[0]] + (*curve)[p[1]] + (*curve)[p[2]]) *
+                                            (1.0f / 3.0f) * ca;
+                                    skip = (p[0] | p[1] | p[2]) == 0;
+                                } else {
+                                    s = load_pixel(source.format, source.pixel(mx, my));
+                                    a = (s.a / 255.0f) * 0.75f;
+                                    al[0] = al[1] = al[2] = a;
+                                    skip = s.a == 0;
+                                }
+                                skip = skip || (what != What::Image && color.a == 0);
+                                if (!skip) {
+                                    if (format == PixelFormat::Gray8) {
+                                        want[0] = mixed_gray(d.r, srgb_decode(luma(s)), a);
+                                    } else {
+                                        const float sl[3] = {srgb_decode(s.r), srgb_decode(s.g),
+                                                             srgb_decode(s.b)};
+                                        store_pixel(format, want, mixed(d, sl, al, a));
+                                    }
+                                }
+                            }
+                            const std::uint8_t* got = t.view.pixel(px, py);
+                            for (int k = 0; k < bytes_per_pixel(format); ++k)
+                                ASSERT_EQ(got[k], want[k])
+                                    << "format " << int(format) << " what " << int(what) << " at "
+                                    << px << "," << py << " byte " << k << " round " << round;
+                        }
+                }
+    }
+}
+
+TEST(PixelViewBlend, MaskFollowsTheFormulaInEveryFormatStrideAndDirection) {
+    check_every_format(What::Mask, 1);
+}
+TEST(PixelViewBlend, LcdMaskFollowsTheFormulaInEveryFormatStrideAndDirection) {
+    check_every_format(What::Lcd, 2);
+}
+TEST(PixelViewBlend, ImageOverFollowsTheFormulaInEveryFormatStrideAndDirection) {
+    check_every_format(What::Image, 3);
+}
+
+TEST(PixelViewBlend, BgraIsRgbaSwappedAndPremultipliedIsStraightOnOpaquePixels) {
+    std::uint32_t seed = 7;
+    for (int round = 0; round < 30; ++round) {
+        Scene scene = random_scene(seed);
+        for (Rgba8& p : scene.px) p.a = 255;   // opaque page
+        const std::vector<std::uint8_t> m = random_mask(seed, 7 * 6);
+        const Rgba8 color{m[0], m[1], m[2], 255};
+        Target rgba = make_target(scene, PixelFormat::Rgba8, 0, false);
+        Target bgra = make_target(scene, PixelFormat::Bgra8, 0, false);
+        Target bgra_pm = make_target(scene, PixelFormat::Bgra8Premultiplied, 0, false);
+        for (Target* t : {&rgba, &bgra, &bgra_pm})
+            blend_mask(t->view, ConstMaskView(m.data(), 7, 6, 7), 3, 2, color);
+        int changed = 0;
+        for (std::size_t i = 0; i < rgba.memory.size(); i += 4) {
+            for (int k = 0; k < 3; ++k) ASSERT_EQ(bgra.memory[i + k], rgba.memory[i + 2 - k]);
+            ASSERT_EQ(bgra.memory[i + 3], rgba.memory[i + 3]);
+            ASSERT_EQ(std::memcmp(&bgra.memory[i], &bgra_pm.memory[i], 4), 0);
+            changed += bgra.memory[i] != 0xA5;
+        }
+        EXPECT_GT(changed, 0);
+    }
+}
+
+TEST(PixelViewBlend, ImageOverloadsEqualTheirViewAndGrayPagesTheirGray8View) {
+    std::uint32_t seed = 99;
+    auto curve = coverage_curve({30, 30, 30, 255}, {230, 230, 230, 255}, {});
+    ASSERT_TRUE(curve.ok());
+    for (int round = 0; round < 20; ++round) {
+        const Scene scene = random_scene(seed);
+        Image image(scene.w, scene.h);
+        for (int i = 0; i < scene.w * scene.h; ++i)
+            image.at(i % scene.w, i / scene.w) = scene.px[static_cast<std::size_t>(i)];
+        Target t = make_target(scene, PixelFormat::Rgba8, 5, true);
+        const std::vector<std::uint8_t> m = random_mask(seed, 8 * 6);
+        const Rgba8 color{m[0], m[1], m[2], m[3]};
+        blend_mask(image, ConstMaskView(m.data(), 8, 6, 8), 2, 1, color, *curve);
+        blend_mask(t.view, ConstMaskView(m.data(), 8, 6, 8), 2, 1, color, *curve);
+        blend_lcd_mask(image, ConstMaskView(m.data(), 6, 8, 6), 5, 3, color, LcdOrder::Bgr);
+        blend_lcd_mask(t.view, ConstMaskView(m.data(), 6, 8, 6), 5, 3, color, LcdOrder::Bgr);
+        for (int y = 0; y < scene.h; ++y)
+            for (int x = 0; x < scene.w; ++x)
+                ASSERT_EQ(load_pixel(PixelFormat::Rgba8, t.view.pixel(x, y)), image.at(x, y));
+
+        Mask page(scene.w, scene.h);
+        for (int i = 0; i < scene.w * scene.h; ++i)
+            page.at(i % scene.w, i / scene.w) = scene.px[static_cast<std::size_t>(i)].g;
+        Mask copy = page;
+        const MaskView cv = copy.view();
+        blend_mask_gray(page.view(), ConstMaskView(m.data(), 8, 6, 8), 2, 1, m[4], *curve);
+        blend_mask(PixelView{cv.data, cv.width, cv.height, cv.stride, PixelFormat::Gray8},
+                   ConstMaskView(m.data(), 8, 6, 8), 2, 1, Rgba8{m[4], m[4], m[4], 255}, *curve);
+        ASSERT_EQ(page, copy);
+    }
+}
+
+TEST(PixelViewBlend, NullEmptyAndFarAwayTargetsDrawNothing) {
+    const std::uint8_t m[4] = {255, 255, 255, 255};
+    blend_mask(PixelView{}, ConstMaskView(m, 2, 2, 2), 0, 0, kBlack);
+    blend_image(PixelView{}, ConstPixelView(m, 1, 1, 4, PixelFormat::Rgba8), 0, 0);
+    std::uint8_t px[4] = {1, 2, 3, 4};
+    const PixelView one{px, 1, 1, 4, PixelFormat::Bgra8Premultiplied};
+    blend_mask(one, ConstMaskView(m, 2, 2, 2), -2147483647, 2147483600, kBlack);
+    blend_lcd_mask(one, ConstMaskView(m, 3, 1, 3), 1, 0, kBlack, LcdOrder::Rgb);
+    blend_image(one, ConstPixelView(m, 1, 1, 4, PixelFormat::Rgba8), 0, 0, std::nanf(""));
+    blend_mask(one, ConstMaskView(m, 2, 2, 2), 0, 0, Rgba8{0, 0, 0, 0});
+    EXPECT_EQ((std::array<int, 4>{px[0], px[1], px[2], px[3]}), (std::array<int, 4>{1, 2, 3, 4}));
 }
 
 Image test_pattern(int w, int h) {

@@ -1,9 +1,11 @@
 // FillOptions, the one options struct of every fill: its defaults are the plain fill; an origin
 // on fill_path is the transform's translation moved (the same bits, in every format); Accurate
 // overlap into a float target is the byte fill's coverage unquantized; every combination a fill
-// does not implement is an Error that names it and leaves the target alone.
+// does not implement is an Error that names it and leaves the target alone; Over and Add combine
+// a fill with the coverage the target holds by their formulas.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -58,6 +60,7 @@ TEST(FillOptions, DefaultsAreThePlainFill) {
     EXPECT_EQ(o.format, CoverageFormat::Gray);
     EXPECT_EQ(o.lcd_order, LcdOrder::Rgb);
     EXPECT_EQ(o.lcd_filter.taps, kLcdFilterDefault.taps);
+    EXPECT_EQ(o.combine, CoverageCombine::Replace);
 }
 
 // The origin of fill_path is added to the transform's translation: the same bits as a caller
@@ -231,6 +234,141 @@ TEST(FillOptions, RasterizerMovesWithItsScratch) {
     ASSERT_TRUE(third.fill_path(p, Affine::identity(), gray.view(), with(OverlapMode::Accurate))
                     .ok());
     EXPECT_EQ(gray, gray_want);
+}
+
+// --- CoverageCombine: drawing into a target that already holds coverage -----------------------
+
+Path disc(Point c, double r) {
+    Path p;
+    add_circle(p, c, r);
+    return p;
+}
+
+FillOptions combining(CoverageCombine rule, CoverageFormat format = CoverageFormat::Gray) {
+    FillOptions o;
+    o.combine = rule;
+    o.format = format;
+    return o;
+}
+
+// One shape filled on its own (Replace) into a w × h mask.
+Mask alone(Rasterizer& r, const Path& p, int w, int h, const FillOptions& o = {}) {
+    Mask m(w, h);
+    FillOptions replace = o;
+    replace.combine = CoverageCombine::Replace;
+    EXPECT_TRUE(r.fill_path(p, Affine(), m.view(), replace).ok());
+    return m;
+}
+
+TEST(CoverageCombine, ReplaceIsTheDefaultAndClearsTheTarget) {
+    Rasterizer r;
+    Mask m(20, 20, 77);
+    ASSERT_TRUE(r.fill_path(disc({5.3, 6.1}, 3.2), Affine(), m.view()).ok());
+    EXPECT_EQ(m, alone(r, disc({5.3, 6.1}, 3.2), 20, 20));
+    EXPECT_EQ(m.at(19, 19), 0);
+}
+
+TEST(CoverageCombine, TwoDisjointShapesEqualEachAlone) {
+    // Two icons into one mask: every pixel is the one shape's coverage that reaches it, as that
+    // shape filled alone gives it.
+    Rasterizer r;
+    const Path a = disc({6.2, 7.4}, 4.1), b = disc({19.7, 12.3}, 5.6);
+    const Mask ma = alone(r, a, 28, 20), mb = alone(r, b, 28, 20);
+    for (CoverageCombine rule : {CoverageCombine::Over, CoverageCombine::Add}) {
+        Mask m(28, 20);
+        ASSERT_TRUE(r.fill_path(a, Affine(), m.view(), combining(rule)).ok());
+        ASSERT_TRUE(r.fill_path(b, Affine(), m.view(), combining(rule)).ok());
+        int inked = 0;
+        for (int y = 0; y < 20; ++y)
+            for (int x = 0; x < 28; ++x) {
+                ASSERT_TRUE(ma.at(x, y) == 0 || mb.at(x, y) == 0);
+                ASSERT_EQ(m.at(x, y), ma.at(x, y) + mb.at(x, y)) << x << "," << y;
+                inked += m.at(x, y) != 0;
+            }
+        EXPECT_GT(inked, 100);
+    }
+}
+
+TEST(CoverageCombine, OverlappingShapesFollowTheFormula) {
+    Rasterizer r;
+    const Path a = disc({8.3, 9.1}, 5.2), b = disc({12.6, 10.4}, 4.7);
+    const Mask ma = alone(r, a, 24, 20), mb = alone(r, b, 24, 20);
+    Mask over = ma, add = ma;
+    ASSERT_TRUE(r.fill_path(b, Affine(), over.view(), combining(CoverageCombine::Over)).ok());
+    ASSERT_TRUE(r.fill_path(b, Affine(), add.view(), combining(CoverageCombine::Add)).ok());
+    int both = 0;
+    for (int y = 0; y < 20; ++y)
+        for (int x = 0; x < 24; ++x) {
+            const int av = ma.at(x, y), bv = mb.at(x, y);
+            ASSERT_EQ(over.at(x, y), av + bv - (av * bv + 127) / 255) << x << "," << y;
+            ASSERT_EQ(add.at(x, y), std::min(av + bv, 255)) << x << "," << y;
+            both += av > 0 && av < 255 && bv > 0 && bv < 255;
+        }
+    EXPECT_GE(both, 3);   // edge pixels of both shapes, where the rules differ
+    // Float targets: the same rules on unquantized coverage.
+    std::vector<float> fa(24 * 20), fb(24 * 20), f(24 * 20);
+    const FloatMaskView va{fa.data(), 24, 20, 24}, vb{fb.data(), 24, 20, 24}, v{f.data(), 24, 20, 24};
+    ASSERT_TRUE(r.fill_path(a, Affine(), va).ok());
+    ASSERT_TRUE(r.fill_path(b, Affine(), vb).ok());
+    ASSERT_TRUE(r.fill_path(a, Affine(), v).ok());
+    ASSERT_TRUE(r.fill_path(b, Affine(), v, combining(CoverageCombine::Over)).ok());
+    for (std::size_t i = 0; i < f.size(); ++i)
+        ASSERT_NEAR(f[i], fa[i] + fb[i] - fa[i] * fb[i], 1e-6) << i;
+}
+
+TEST(CoverageCombine, AddJoinsTilesSharingAnEdgeWithoutASeam) {
+    // Two rectangles meeting at x = 5.5: the pixel column they share is half covered by each.
+    Rasterizer r;
+    Path left, right;
+    add_rect(left, 1, 1, 5.5, 6);
+    add_rect(right, 5.5, 1, 9, 6);
+    Mask add(10, 7), over(10, 7);
+    for (const Path* p : {&left, &right}) {
+        ASSERT_TRUE(r.fill_path(*p, Affine(), add.view(), combining(CoverageCombine::Add)).ok());
+        ASSERT_TRUE(r.fill_path(*p, Affine(), over.view(), combining(CoverageCombine::Over)).ok());
+    }
+    EXPECT_EQ(add.at(5, 3), 255);
+    EXPECT_EQ(over.at(5, 3), 128 + 128 - (128 * 128 + 127) / 255);   // the seam Over leaves
+}
+
+TEST(CoverageCombine, LcdAndPolylineFillsCombineToo) {
+    Rasterizer r;
+    const Path a = disc({5.2, 5.1}, 3.4), b = disc({8.1, 6.3}, 3.0);
+    const FillOptions lcd = combining(CoverageCombine::Over, CoverageFormat::Lcd);
+    const Mask la = alone(r, a, 3 * 14, 12, lcd), lb = alone(r, b, 3 * 14, 12, lcd);
+    Mask m = la;
+    ASSERT_TRUE(r.fill_path(b, Affine(), m.view(), lcd).ok());
+    for (int y = 0; y < 12; ++y)
+        for (int x = 0; x < 3 * 14; ++x) {
+            const int av = la.at(x, y), bv = lb.at(x, y);
+            ASSERT_EQ(m.at(x, y), av + bv - (av * bv + 127) / 255) << x << "," << y;
+        }
+    // Polylines: a square over a mask of 100 everywhere.
+    Mask s(8, 8), t(8, 8, 100);
+    ASSERT_TRUE(r.fill(square(), s.view()).ok());
+    ASSERT_TRUE(r.fill(square(), t.view(), combining(CoverageCombine::Add)).ok());
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) ASSERT_EQ(t.at(x, y), std::min(100 + s.at(x, y), 255));
+}
+
+TEST(CoverageCombine, ErrorsAndShapesOffTheTargetLeaveItAlone) {
+    Rasterizer r;
+    Mask m(12, 12, 40);
+    const Mask before = m;
+    Path bad;
+    add_circle(bad, {50, 50}, 3);   // off the target
+    ASSERT_TRUE(r.fill_path(bad, Affine(), m.view(), combining(CoverageCombine::Over)).ok());
+    EXPECT_EQ(m, before);
+    bad.line_to({std::nan(""), 2});
+    EXPECT_FALSE(r.fill_path(bad, Affine(), m.view(), combining(CoverageCombine::Over)).ok());
+    EXPECT_FALSE(r.fill_path(disc({5, 5}, 3), Affine(), MaskView{nullptr, 4, 4, 4},
+                             combining(CoverageCombine::Over)).ok());
+    FillOptions lcd = combining(CoverageCombine::Add, CoverageFormat::Lcd);
+    Mask odd(13, 4);
+    auto st = r.fill_path(disc({2, 2}, 1), Affine(), odd.view(), lcd);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.error().message.find("multiple of 3"), std::string::npos);
+    EXPECT_EQ(m, before);
 }
 
 TEST(Diagnostics, RasterKernelNameIsAKnownLevel) {

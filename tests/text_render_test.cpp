@@ -1,5 +1,6 @@
 // TextRenderer: rendered lines against golden images, the cache across renders, LCD output,
-// colours, determinism across threads, and errors.
+// colours, determinism across threads, and errors; drawing into a caller's pixels (every format,
+// offsets, clipping, no background) equal to render()'s page.
 //
 // Goldens: tests/golden/text/<name>.png, 8-bit gray (black text on white, so gray loses
 // nothing). Tolerance: max |difference| <= 2 levels per pixel — room for a rasterizer or
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
@@ -24,6 +26,7 @@ namespace {
 
 const std::string kDejaVu = BEZEL_FONTS_DIR "/dejavu-sans/DejaVuSans.ttf";
 const std::string kCantarell = BEZEL_FONTS_DIR "/cantarell/Cantarell-Regular.otf";
+const std::string kEmoji = BEZEL_FONTS_DIR "/noto-color-emoji/NotoColorEmoji-subset.ttf";
 
 // A PageRowsSink that hands each call to `f`.
 template <typename F>
@@ -364,6 +367,158 @@ TEST(TextRenderer, ErrorsNameTheInput) {
     TextRenderOptions axes = line_options(16);
     axes.shape.variations = {{"wght", 700}};
     EXPECT_FALSE(r->render("x", axes));   // DejaVu Sans has no axes
+}
+
+// --- Drawing into the caller's pixels -----------------------------------------------------------
+
+// A target of `w` × `h` pixels of `fill` in `format`, rows padded by 8 bytes.
+struct Surface {
+    std::vector<std::uint8_t> memory;
+    PixelView view;
+    Surface(int w, int h, PixelFormat format, Rgba8 fill) {
+        const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(w) * bytes_per_pixel(format) + 8;
+        memory.assign(static_cast<std::size_t>(stride * h), 0);
+        view = PixelView{memory.data(), w, h, stride, format};
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) store_pixel(format, view.pixel(x, y), fill);
+    }
+    Rgba8 at(int x, int y) const { return load_pixel(view.format, view.pixel(x, y)); }
+};
+
+TEST(TextRendererDraw, OntoAnImageOfTheBackgroundIsRenderPixelForPixel) {
+    auto fonts = FontCollection::open({{kDejaVu, 0, {}}, {kEmoji, 0, {}}});
+    ASSERT_TRUE(fonts) << fonts.error().message;
+    auto r = TextRenderer::open(std::move(*fonts));
+    ASSERT_TRUE(r);
+    for (CoverageFormat format : {CoverageFormat::Gray, CoverageFormat::Lcd})
+        for (LcdOrder order : {LcdOrder::Rgb, LcdOrder::Bgr}) {
+            TextRenderOptions o;
+            o.shape.size_px = 17;
+            o.layout.margin_px = 3;
+            o.format = format;
+            o.lcd_order = order;
+            o.foreground = {20, 60, 140, 255};
+            o.background = {250, 245, 230, 255};
+            const std::string text = "Wave \xF0\x9F\x98\x80 fj";   // with a colour emoji
+            auto page = r->render(text, o);
+            ASSERT_TRUE(page) << page.error().message;
+            auto laid_out = r->layout(text, o);
+            ASSERT_TRUE(laid_out);
+            EXPECT_EQ(std::ceil(laid_out->width_px), page->width());
+            EXPECT_EQ(std::ceil(laid_out->height_px), page->height());
+            EXPECT_TRUE(r->last_text_has_color());
+            Image drawn(page->width(), page->height(), o.background);
+            ASSERT_TRUE(r->draw(text, o, drawn.view(), {0, 0}).ok());
+            EXPECT_TRUE(drawn == *page);
+            Image again(page->width(), page->height(), o.background);
+            ASSERT_TRUE(r->draw(*laid_out, o, again.view(), {0, 0}).ok());
+            EXPECT_TRUE(again == *page);
+        }
+}
+
+TEST(TextRendererDraw, IntoBgraPremultipliedAtAnOffsetIsThePageMovedAndClipped) {
+    auto r = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(r);
+    TextRenderOptions o;
+    o.shape.size_px = 15;
+    o.layout.margin_px = 4;   // all ink inside the page (draw() does not clip to the page)
+    o.foreground = {200, 30, 30, 255};
+    o.background = {240, 240, 255, 255};
+    const std::string text = "Toolkit text";
+    auto page = r->render(text, o);
+    ASSERT_TRUE(page);
+    // Whole-pixel offsets, one of them pushing the text past the target's left and top sides.
+    for (const auto& [dx, dy] : {std::pair{9, 4}, std::pair{-13, -6}}) {
+        Surface s(page->width() + 5, page->height() + 2, PixelFormat::Bgra8Premultiplied,
+                  o.background);
+        ASSERT_TRUE(r->draw(text, o, s.view, {double(dx), double(dy)}).ok());
+        int inked = 0;
+        for (int y = 0; y < s.view.height; ++y)
+            for (int x = 0; x < s.view.width; ++x) {
+                const int px = x - dx, py = y - dy;
+                const bool on_page = px >= 0 && py >= 0 && px < page->width() && py < page->height();
+                const Rgba8 want = on_page ? page->at(px, py) : o.background;
+                ASSERT_EQ(s.at(x, y), want) << dx << "," << dy << " at " << x << "," << y;
+                inked += want != o.background;
+            }
+        EXPECT_GT(inked, 50);
+        // The padding after each row is untouched.
+        for (int y = 0; y < s.view.height; ++y)
+            for (int k = 0; k < 8; ++k) ASSERT_EQ(s.view.row(y)[4 * s.view.width + k], 0);
+    }
+}
+
+TEST(TextRendererDraw, WritesOnlyThePixelsUnderGlyphs) {
+    // No background is filled: over transparent pixels the text is "over" nothing, and every
+    // pixel render() leaves as background stays transparent.
+    auto r = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(r);
+    TextRenderOptions o;
+    o.shape.size_px = 14;
+    o.coverage.rendering = TextRendering::Linear;
+    auto page = r->render("Hi there", o);
+    ASSERT_TRUE(page);
+    Surface s(page->width(), page->height(), PixelFormat::Rgba8, Rgba8{0, 0, 0, 0});
+    ASSERT_TRUE(r->draw("Hi there", o, s.view, {0, 0}).ok());
+    int opaque = 0;
+    for (int y = 0; y < page->height(); ++y)
+        for (int x = 0; x < page->width(); ++x) {
+            const Rgba8 got = s.at(x, y);
+            if (page->at(x, y) == o.background) {
+                ASSERT_EQ(got.a, 0) << x << "," << y;
+            } else {
+                ASSERT_GT(got.a, 0) << x << "," << y;
+                ASSERT_EQ(got.r, 0);   // the ink is black, whatever its alpha
+            }
+            opaque += got.a == 255;
+        }
+    EXPECT_GT(opaque, 20);
+}
+
+TEST(TextRendererDraw, GrayTargetIsRenderGray) {
+    auto r = TextRenderer::open(kCantarell);
+    ASSERT_TRUE(r);
+    TextRenderOptions o;
+    o.shape.size_px = 13;
+    o.foreground = {30, 30, 30, 255};
+    o.background = {220, 220, 220, 255};
+    auto page = r->render_gray("Gray page", o);
+    ASSERT_TRUE(page);
+    Surface s(page->width(), page->height(), PixelFormat::Gray8, o.background);
+    ASSERT_TRUE(r->draw("Gray page", o, s.view, {0, 0}).ok());
+    for (int y = 0; y < page->height(); ++y)
+        for (int x = 0; x < page->width(); ++x) ASSERT_EQ(s.view.pixel(x, y)[0], page->at(x, y));
+}
+
+TEST(TextRendererDraw, ErrorsNameTheProblemAndWriteNothing) {
+    auto r = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(r);
+    TextRenderOptions o;
+    Surface gray(40, 20, PixelFormat::Gray8, Rgba8{255, 255, 255, 255});
+    Surface rgba(40, 20, PixelFormat::Rgba8, Rgba8{255, 255, 255, 255});
+    const std::vector<std::uint8_t> gray_before = gray.memory, rgba_before = rgba.memory;
+    auto says = [](const Status& s, const std::string& what) {
+        return !s.ok() && s.error().message.find(what) != std::string::npos;
+    };
+    TextRenderOptions lcd = o;
+    lcd.format = CoverageFormat::Lcd;
+    EXPECT_TRUE(says(r->draw("a", lcd, gray.view, {0, 0}), "RGBA or BGRA target"));
+    lcd.background.a = 128;
+    EXPECT_TRUE(says(r->draw("a", lcd, rgba.view, {0, 0}), "opaque background"));
+    EXPECT_TRUE(says(r->draw("a", o, PixelView{nullptr, 4, 4, 16, PixelFormat::Rgba8}, {0, 0}),
+                     "null data"));
+    EXPECT_TRUE(says(r->draw("a", o, PixelView{rgba.memory.data(), -1, 4, 16, PixelFormat::Rgba8},
+                             {0, 0}),
+                     "outside 0.."));
+    EXPECT_TRUE(says(r->draw("a", o, rgba.view, {std::nan(""), 0}), "origin is not finite"));
+    TextLayout foreign;
+    foreign.glyphs.push_back(PlacedGlyph{3, 1, 10, 0, 7});
+    EXPECT_TRUE(says(r->draw(foreign, o, rgba.view, {0, 0}), "font 7"));
+    EXPECT_EQ(gray.memory, gray_before);
+    EXPECT_EQ(rgba.memory, rgba_before);
+    // Text wholly outside the target draws nothing and is no error.
+    ASSERT_TRUE(r->draw("far away", o, rgba.view, {-5000, 3e6}).ok());
+    EXPECT_EQ(rgba.memory, rgba_before);
 }
 
 TEST(TextRenderer, EmptyTextIsABackgroundPage) {

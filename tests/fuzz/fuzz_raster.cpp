@@ -101,6 +101,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)raster.fill_path(path, transform, bezel::MaskView{mask.data(), w, h, w}, fill);
         if (raster.fill_path(path, transform, bezel::FloatMaskView{fmask.data(), w, h, w}, fill))
             for (float f : fmask) BEZEL_FUZZ_CHECK(f >= 0.0f && f <= 1.0f);
+        // Combining fills keep coverage in [0, 1] whatever the target held (the float target
+        // holds the fill above).
+        for (bezel::CoverageCombine combine :
+             {bezel::CoverageCombine::Over, bezel::CoverageCombine::Add}) {
+            bezel::FillOptions combined = fill;
+            combined.combine = combine;
+            (void)raster.fill_path(path, transform, bezel::MaskView{mask.data(), w, h, w},
+                                   combined);
+            if (raster.fill_path(path, transform, bezel::FloatMaskView{fmask.data(), w, h, w},
+                                 combined))
+                for (float f : fmask) BEZEL_FUZZ_CHECK(f >= 0.0f && f <= 1.0f);
+        }
         // The exact overlap pass (its float→byte conversion is where UBSan caught NaN).
         const bezel::FillOptions accurate{rule, bezel::OverlapMode::Accurate, options};
         (void)raster.fill_path(path, transform, bezel::MaskView{mask.data(), w, h, w}, accurate);

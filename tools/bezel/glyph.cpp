@@ -210,7 +210,7 @@ Command add_glyph_command(CLI::App& app) {
         "Glyphs the font marks as overlapping (OVERLAP_SIMPLE/COMPOUND) use the accurate overlap\n"
         "mode; --overlap accurate uses it for every glyph. --lcd samples 3x horizontally through\n"
         "FreeType's default 5-tap filter; the box is one pixel wider on each side and each pixel\n"
-        "has R, G, B subpixel coverage.\n"
+        "has three subpixel coverages, left to right: R, G, B for rgb, B, G, R for bgr.\n"
         "Colour glyphs (COLRv1, COLRv0, CBDT, sbix) are drawn in colour (--palette,\n"
         "--custom-palette; text-colour entries take --foreground), boxed around their paint;\n"
         "SVG glyphs are drawn from their outlines, with a warning.\n"

@@ -43,7 +43,8 @@ struct GlyphBitmap {
     GlyphBox box;                       // width in display pixels
     CoverageFormat format = CoverageFormat::Gray;
     LcdOrder lcd_order = LcdOrder::Rgb;
-    // rows packed: width bytes, 3·width for LCD (R, G, B), 4·width for a colour glyph
+    // rows packed: width bytes, 3·width for LCD (subpixels left to right: the panel's order),
+    // 4·width for a colour glyph
     // (box.color: premultiplied R, G, B, A, as GlyphRasterizer::draw_rgba writes it)
     std::vector<std::uint8_t> pixels;
     int bytes_per_pixel() const { return box.color ? 4 : format == CoverageFormat::Lcd ? 3 : 1; }

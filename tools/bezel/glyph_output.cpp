@@ -80,17 +80,27 @@ Expected<std::vector<std::uint8_t>> compose(const std::vector<GlyphBitmap>& glyp
     return px;
 }
 
+// The R, G, B coverages of an LCD pixel, whose bytes are its subpixels left to right, i.e. in
+// the panel's order (raster.hpp's CoverageFormat::Lcd).
+Rgba8 lcd_rgb(const std::uint8_t* p, LcdOrder order) {
+    return order == LcdOrder::Bgr ? Rgba8{p[2], p[1], p[0], 255} : Rgba8{p[0], p[1], p[2], 255};
+}
+
 // LCD coverage as an image, each subpixel's coverage in its channel; painted when `colours`.
 Image rgb_image(const std::vector<std::uint8_t>& px, int w, int h,
-                const std::optional<PictureColours>& colours) {
+                const std::optional<PictureColours>& colours, LcdOrder order) {
     Image img(w, h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const std::uint8_t* p = px.data() + (static_cast<std::size_t>(y) * w + x) * 3;
-            img.at(x, y) = colours ? paint_rgb(*colours, p[0] / 255.0, p[1] / 255.0, p[2] / 255.0)
-                                   : Rgba8{p[0], p[1], p[2], 255};
+            const Rgba8 c = lcd_rgb(px.data() + (static_cast<std::size_t>(y) * w + x) * 3, order);
+            img.at(x, y) = colours ? paint_rgb(*colours, c.r / 255.0, c.g / 255.0, c.b / 255.0) : c;
         }
     return img;
+}
+
+// One call's glyphs share one panel order.
+LcdOrder lcd_order_of(const std::vector<GlyphBitmap>& glyphs) {
+    return glyphs.empty() ? LcdOrder::Rgb : glyphs.front().lcd_order;
 }
 
 int picture_bpp(const std::vector<GlyphBitmap>& glyphs) {
@@ -125,7 +135,8 @@ Expected<Image> color_picture(const std::vector<GlyphBitmap>& glyphs,
                 if (bpp == 1) {
                     out = paint(c, p[0] / 255.0);
                 } else if (bpp == 3) {
-                    out = paint_rgb(c, p[0] / 255.0, p[1] / 255.0, p[2] / 255.0);
+                    const Rgba8 rgb = lcd_rgb(p, g.lcd_order);
+                    out = paint_rgb(c, rgb.r / 255.0, rgb.g / 255.0, rgb.b / 255.0);
                 } else {
                     // Premultiplied source over the straight paper, back to straight alpha.
                     const double a = p[3] / 255.0, pa = out.a / 255.0;
@@ -239,16 +250,17 @@ Expected<std::string> glyphs_png(const std::vector<GlyphBitmap>& glyphs,
     const int bpp = picture_bpp(glyphs);
     auto px = compose(glyphs, l, bpp, options.margin_px);
     if (!px) return px.error();
+    const LcdOrder order = lcd_order_of(glyphs);
     const ConstMaskView gray{px->data(), l.width, l.height, l.width};
     if (!colours) {
         auto png = bpp == 1 ? encode_png_gray(gray, png_options)
-                            : encode_png(rgb_image(*px, l.width, l.height, colours),
+                            : encode_png(rgb_image(*px, l.width, l.height, colours, order),
                                          PngColor::Rgb, png_options);
         if (!png) return png.error();
         return std::string(png->begin(), png->end());
     }
     const Image picture = bpp == 1 ? paint_coverage(gray, *colours)
-                                   : rgb_image(*px, l.width, l.height, colours);
+                                   : rgb_image(*px, l.width, l.height, colours, order);
     return picture_png(picture, bpp == 1 && colours->gray(), colours->translucent(),
                        png_options);
 }
@@ -265,14 +277,16 @@ Expected<std::string> glyphs_pnm(const std::vector<GlyphBitmap>& glyphs,
     const int bpp = picture_bpp(glyphs);
     auto px = compose(glyphs, l, bpp, options.margin_px);
     if (!px) return px.error();
+    const LcdOrder order = lcd_order_of(glyphs);
     const ConstMaskView gray{px->data(), l.width, l.height, l.width};
     if (!colours) {
         const std::vector<std::uint8_t> bytes =
-            bpp == 1 ? encode_pgm(gray) : encode_ppm(rgb_image(*px, l.width, l.height, colours));
+            bpp == 1 ? encode_pgm(gray)
+                     : encode_ppm(rgb_image(*px, l.width, l.height, colours, order));
         return std::string(bytes.begin(), bytes.end());
     }
     const Image picture = bpp == 1 ? paint_coverage(gray, *colours)
-                                   : rgb_image(*px, l.width, l.height, colours);
+                                   : rgb_image(*px, l.width, l.height, colours, order);
     return picture_pnm(picture, bpp == 1 && colours->gray());
 }
 

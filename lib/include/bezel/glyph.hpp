@@ -115,12 +115,14 @@ struct GlyphRenderOptions {
     // How the outline is filled: fill rule, overlap mode, flattening, gray or LCD coverage and
     // the LCD order and filter, as for any Rasterizer fill. Accurate overlap is chosen
     // automatically for glyphs that mark overlapping contours (Accumulate here never forces plain
-    // accumulation on them). `fill.origin` must be zero: `offset_px` places the pen.
+    // accumulation on them). `fill.origin` must be zero: `offset_px` places the pen; and
+    // `fill.combine` Replace: a glyph bitmap is the glyph's own coverage.
     FillOptions fill;
 };
 
 // Where a glyph bitmap sits relative to the pen, and its size. For LCD coverage `width` counts
-// DISPLAY pixels and the bitmap has 3 bytes per pixel.
+// DISPLAY pixels and the bitmap has 3 bytes per pixel, its subpixels left to right (the panel's
+// order: raster.hpp's CoverageFormat::Lcd).
 struct GlyphBox {
     int left = 0, top = 0;        // bitmap_left / bitmap_top, as FreeType
     int width = 0, height = 0;

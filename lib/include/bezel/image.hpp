@@ -6,7 +6,9 @@
 // (bytes for MaskView, floats for FloatMaskView). It may exceed the width (a sub-rectangle of a
 // glyph atlas) and may be negative (bottom-up memory). Views never own or free their memory.
 //
-// Colour images: `Image` holds straight (non-premultiplied) sRGB-encoded RGBA8. Coverage masks
+// Colour images: `Image` holds straight (non-premultiplied) sRGB-encoded RGBA8; a PixelView is a
+// caller's pixels in any of the PixelFormats (gray, RGBA, BGRA, straight or premultiplied), with
+// its stride in BYTES, and every blend function draws into one. Coverage masks
 // are LINEAR (area fractions); blending converts colours to linear light (the sRGB transfer
 // function, IEC 61966-2-1), mixes there, and encodes back, so anti-aliased edges keep their
 // weight on any background. The formula and tables are at the implementation. Text may map its
@@ -126,11 +128,18 @@ struct Rgba8 {
 Expected<Rgba8> parse_color(std::string_view text);
 
 // An owning RGBA8 image, rows packed. A value type.
+struct PixelView;
+struct ConstPixelView;
+
 class Image {
 public:
     Image() = default;
     // Filled with `fill`. Precondition: 0 ≤ width, height ≤ kMaxImageDim.
     Image(int width, int height, Rgba8 fill = {0, 0, 0, 0});
+    // The image's pixels as a PixelFormat::Rgba8 view (straight alpha, rows packed), valid until
+    // the image is resized, moved from or destroyed.
+    PixelView view();
+    ConstPixelView view() const;
     int width() const { return width_; }
     int height() const { return height_; }
     Rgba8& at(int x, int y) { return pixels_[index(x, y)]; }
@@ -149,9 +158,87 @@ private:
     std::vector<Rgba8> pixels_;
 };
 
-// Order of the subpixels in a display pixel, left to right (an LCD panel's layout). Also the
-// order of the three coverage bytes of a display pixel in an LCD mask.
+// Order of the subpixels in a display pixel, left to right (an LCD panel's layout), and so the
+// order of the three coverage bytes of a display pixel in an LCD mask: an LCD mask's bytes are
+// its subpixels left to right, which on an Rgb panel are R, G, B and on a Bgr panel B, G, R
+// (FreeType's FT_PIXEL_MODE_LCD is laid out the same way). The Rasterizer's CoverageFormat::Lcd
+// writes masks in this layout and blend_lcd_mask reads them in it: give both the same order.
 enum class LcdOrder : std::uint8_t { Rgb, Bgr };
+
+// --- Caller-owned colour targets ----------------------------------------------------------------
+// How a PixelView's pixels are laid out in memory. Colour values are sRGB-ENCODED bytes in every
+// format (as Image's, and as toolkits and PNG store them).
+//   Gray8:  1 byte, the sRGB-encoded gray; always opaque (no alpha is stored).
+//   Rgba8, Bgra8: 4 bytes, in memory order R, G, B, A or B, G, R, A; STRAIGHT alpha (the colour
+//           bytes do not depend on A).
+//   Rgba8Premultiplied, Bgra8Premultiplied: the same orders, colour PREMULTIPLIED by alpha in the
+//           encoded values, P = round(C·A/255), so each colour byte ≤ A (as Cairo, Skia and
+//           Direct2D store premultiplied 8-bit colour: Bgra8Premultiplied is Cairo's ARGB32 and
+//           Skia's N32 on a little-endian machine, and paint.hpp's RgbaView is
+//           Rgba8Premultiplied).
+// Blending reads and writes a pixel through load_pixel and store_pixel, below, and mixes in
+// linear light between them (the formulas at blend_mask). A premultiplied pixel of alpha 255 is
+// its straight colour, so on opaque pixels every RGBA/BGRA format blends to the same colour bit
+// for bit.
+enum class PixelFormat : std::uint8_t {
+    Gray8,
+    Rgba8,
+    Bgra8,
+    Rgba8Premultiplied,
+    Bgra8Premultiplied,
+};
+// 1 for Gray8, 4 for the others.
+constexpr int bytes_per_pixel(PixelFormat format) { return format == PixelFormat::Gray8 ? 1 : 4; }
+
+// A writable view of a caller's pixels. Pixel (x, y) starts at data + y·stride +
+// x·bytes_per_pixel(format); y points down. `stride` is in BYTES from one row's start to the
+// next: at least width·bytes_per_pixel (padding, or a sub-rectangle of a larger surface), or
+// negative for bottom-up memory. No alignment is required. The view never owns or frees the
+// memory; blend functions write only the pixels they blend (nothing is cleared or filled).
+struct PixelView {
+    std::uint8_t* data = nullptr;
+    int width = 0, height = 0;
+    std::ptrdiff_t stride = 0;
+    PixelFormat format = PixelFormat::Rgba8;
+
+    std::uint8_t* row(int y) const { return data + static_cast<std::ptrdiff_t>(y) * stride; }
+    std::uint8_t* pixel(int x, int y) const {
+        return row(y) + static_cast<std::ptrdiff_t>(x) * bytes_per_pixel(format);
+    }
+    // The sub-rectangle [x, x+w) × [y, y+h). Precondition: it lies inside this view.
+    PixelView sub(int x, int y, int w, int h) const { return {pixel(x, y), w, h, stride, format}; }
+};
+
+// Read-only pixels (a source image to composite).
+struct ConstPixelView {
+    const std::uint8_t* data = nullptr;
+    int width = 0, height = 0;
+    std::ptrdiff_t stride = 0;
+    PixelFormat format = PixelFormat::Rgba8;
+
+    ConstPixelView() = default;
+    ConstPixelView(const std::uint8_t* d, int w, int h, std::ptrdiff_t s, PixelFormat f)
+        : data(d), width(w), height(h), stride(s), format(f) {}
+    ConstPixelView(const PixelView& v)  // NOLINT: a writable view is readable
+        : data(v.data), width(v.width), height(v.height), stride(v.stride), format(v.format) {}
+    const std::uint8_t* row(int y) const { return data + static_cast<std::ptrdiff_t>(y) * stride; }
+    const std::uint8_t* pixel(int x, int y) const {
+        return row(y) + static_cast<std::ptrdiff_t>(x) * bytes_per_pixel(format);
+    }
+};
+
+// One pixel of `format` at `p` as a straight sRGB-encoded colour, exactly as the blend
+// functions read it: Gray8 g is {g, g, g, 255}; straight formats are their bytes; a
+// premultiplied pixel of alpha A > 0 has colour C = min(255, round(255·P/A)) (integer
+// rounding, half up), and of alpha 0 is transparent black {0, 0, 0, 0} (its colour bytes,
+// which should be 0, are ignored).
+Rgba8 load_pixel(PixelFormat format, const std::uint8_t* p);
+// `c` written at `p` in `format`, exactly as the blend functions write: Gray8 takes the luma of
+// the encoded values (Rec. 709 weights, 8.8 fixed point, rounded: r = g = b stays that byte)
+// and drops alpha; straight formats store the bytes; premultiplied formats store
+// P = round(C·A/255) (so alpha 0 stores 0, 0, 0, 0). For every premultiplied pixel with P ≤ A
+// (and colour 0 where A = 0), store_pixel(load_pixel(P)) == P: an untouched pixel round-trips.
+void store_pixel(PixelFormat format, std::uint8_t* p, Rgba8 c);
 
 // --- Text weight: how coverage becomes ink ------------------------------------------------------
 // Mixing exact coverage in linear light is right for compositing, but readers judge text by the
@@ -217,25 +304,65 @@ private:
 Expected<CoverageCurve> coverage_curve(Rgba8 foreground, Rgba8 background,
                                        const CoverageCurveOptions& options);
 
-// Blends `color` through the coverage `mask` onto `image` with the mask's top-left pixel at
-// (x, y) (parts outside the image are clipped), in linear light: for each channel
-// out = enc(lerp(dec(dst), dec(color), α)) with α = curve[coverage]·color.a (α = coverage·
-// color.a without a curve). Alpha is composited "over".
+// --- Blending into a PixelView ---------------------------------------------------------------------
+// Every blend function below draws a source (a coverage mask in a colour, or an image) onto
+// `target` with the source's top-left pixel at (x, y) of the target (parts outside the target are
+// clipped; any int position is safe), touching only the pixels the source covers with nonzero
+// coverage or alpha. A null target or source, or an empty one, draws nothing.
+//
+// The mix, per pixel, in LINEAR light (dec/enc: the sRGB transfer function, srgb_decode and
+// srgb_encode below), with D = load_pixel(target pixel) straight, S the source's straight colour
+// and α in [0, 1] the source's weight (how α is made is stated at each function):
+//   D.a = 255:  out.c = enc(dec(D.c) + (dec(S.c) − dec(D.c))·α)        out.a = 255
+//   otherwise:  out.a = α + Da·(1 − α)   (Da = D.a/255; "over")
+//               out.c = enc((dec(S.c)·α + dec(D.c)·Da·(1 − α)) / out.a), out.a stored as
+//               round(out.a·255); when out.a is 0 the pixel is left as it was.
+// then store_pixel(out). So a premultiplied target is un-premultiplied (load_pixel's rounding),
+// mixed in straight linear light, and premultiplied again (store_pixel's rounding); on an opaque
+// pixel that is the straight formula exactly. A Gray8 target is opaque: S.c is the luma of the
+// source colour (as store_pixel takes it) and out = enc(dec(D) + (dec(S) − dec(D))·α).
+// Arithmetic is float, the same operations in every format, so an RGBA and a BGRA target (or a
+// straight and a premultiplied one, on opaque pixels) come out equal byte for byte after the
+// channel swap.
+
+// Blends `color` through the coverage `mask` (8-bit, LINEAR area fractions) onto `target`:
+// α = curve[coverage]·color.a/255 (α = coverage/255·color.a/255 without a curve, the identity).
+void blend_mask(const PixelView& target, ConstMaskView mask, int x, int y, Rgba8 color);
+void blend_mask(const PixelView& target, ConstMaskView mask, int x, int y, Rgba8 color,
+                const CoverageCurve& curve);
+// The same for an LCD mask: 3 bytes per display pixel (`mask.width` = 3 × display pixels), its
+// subpixels left to right, which are the colours in the panel's `order` (R, G, B or B, G, R; the
+// Rasterizer's CoverageFormat::Lcd writes this layout for its FillOptions::lcd_order: pass the
+// same order). Each colour channel mixes with its own subpixel's α_k = curve[coverage_k]·
+// color.a/255; the alpha channel takes α = max_k α_k (the pixel is at least that covered), and a
+// channel's mix on a pixel that is not opaque uses its own α_k in the "over" formula above
+// (in both the numerator and out.a's normalisation). Subpixel text is meant for opaque pixels
+// (one alpha channel cannot hold three coverages). On a Gray8 target, which has no subpixels,
+// α = (α_R + α_G + α_B)/3, the pixel's mean ink.
+void blend_lcd_mask(const PixelView& target, ConstMaskView mask, int x, int y, Rgba8 color,
+                    LcdOrder order);
+void blend_lcd_mask(const PixelView& target, ConstMaskView mask, int x, int y, Rgba8 color,
+                    LcdOrder order, const CoverageCurve& curve);
+// Composites the image `source` (any PixelFormat; e.g. a colour glyph, Rgba8Premultiplied)
+// "over" `target`: S = load_pixel(source pixel), α = S.a/255·opacity (opacity clamped to
+// [0, 1]; 0 or NaN draws nothing). Pixels of source alpha 0 are skipped.
+void blend_image(const PixelView& target, ConstPixelView source, int x, int y,
+                 float opacity = 1);
+
+// --- The same onto an Image and a gray page (what the renderers have always called) ---------------
+// blend_mask and blend_lcd_mask onto an Image: exactly the PixelView functions on image.view()
+// (PixelFormat::Rgba8), bit for bit.
 void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color);
 void blend_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color,
                 const CoverageCurve& curve);
-// The same for an LCD mask (3 bytes per pixel, `mask.width` = 3 × pixels, the bytes of each
-// pixel in `order`: R, G, B or B, G, R): each colour channel uses its own subpixel coverage
-// (each through the curve).
-// Masks from the Rasterizer's CoverageFormat::Lcd are R, G, B in memory for either panel order:
-// pass LcdOrder::Rgb.
 void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, LcdOrder order);
 void blend_lcd_mask(Image& image, ConstMaskView mask, int x, int y, Rgba8 color, LcdOrder order,
                     const CoverageCurve& curve);
 
-// The same for a gray page (one sRGB-encoded byte per pixel, opaque) and an opaque gray colour:
-// out = enc(lerp(dec(dst), dec(gray), α)). Equal, pixel for pixel, to blend_mask on an
-// RGBA page of the same grays (where r = g = b = that byte), at a quarter of the memory.
+// blend_mask for a gray page (one sRGB-encoded byte per pixel, opaque) and an opaque gray colour:
+// out = enc(lerp(dec(dst), dec(gray), α)). Equal, pixel for pixel, to blend_mask on a Gray8
+// PixelView of the same memory with colour {gray, gray, gray, 255}, and to blend_mask on an
+// RGBA page of the same grays (r = g = b = that byte), at a quarter of the memory.
 void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8_t gray);
 void blend_mask_gray(MaskView page, ConstMaskView mask, int x, int y, std::uint8_t gray,
                      const CoverageCurve& curve);

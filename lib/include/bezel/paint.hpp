@@ -43,7 +43,8 @@ namespace bezel {
 // --- Premultiplied RGBA targets ------------------------------------------------------------------
 // Four bytes per pixel in memory order R, G, B, A, PREMULTIPLIED (each colour byte ≤ alpha),
 // sRGB-encoded colour. `stride` is in BYTES from one row to the next (≥ 4·width, or negative for
-// bottom-up memory). What a colour glyph is drawn into (a toolkit's RGBA atlas).
+// bottom-up memory). What a colour glyph is drawn into (a toolkit's RGBA atlas); the same memory
+// as image.hpp's PixelView of PixelFormat::Rgba8Premultiplied.
 struct RgbaView {
     std::uint8_t* data = nullptr;
     int width = 0, height = 0;
@@ -250,7 +251,9 @@ void premultiply(const Image& image, const RgbaView& target);
 // Composites a finished colour glyph (premultiplied RGBA) "over" `page` with its top-left pixel at
 // (x, y), parts outside the page clipped, in linear light as blend_mask does (image.hpp): each
 // channel out = enc(dec(src_straight)·α + dec(dst)·(1 − α)), α the glyph's alpha, page alpha
-// composited over. `opacity` in [0, 1] scales α (a faded text colour's alpha).
+// composited over. `opacity` in [0, 1] scales α (a faded text colour's alpha). It is image.hpp's
+// blend_image of the glyph as a PixelFormat::Rgba8Premultiplied view onto page.view(), which
+// composites onto a caller's target of any format.
 void blend_rgba(Image& page, ConstRgbaView glyph, int x, int y, float opacity = 1);
 
 }  // namespace bezel

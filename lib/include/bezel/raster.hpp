@@ -85,15 +85,36 @@ inline constexpr int kLcdPaddingPx = 1;
 // What a fill writes into a MaskView.
 //   Gray: one byte per pixel, round(coverage·255).
 //   Lcd:  3 bytes per DISPLAY pixel (FreeType's FT_PIXEL_MODE_LCD layout: `target.width` is 3 ×
-//         the display width, and the bytes of a display pixel are always R, G, B in memory,
-//         whatever the panel's order). The fill is sampled at 3× horizontal resolution (subpixel
-//         k covers display x in [k/3, (k+1)/3]), filtered by FillOptions::lcd_filter, and each
-//         colour takes the subpixel its panel lights: on an Rgb panel R is the left third, on a
-//         Bgr panel the right third (the Bgr bytes are the Rgb bytes reversed within each pixel).
+//         the display width). The fill is sampled at 3× horizontal resolution (subpixel k covers
+//         display x in [k/3, (k+1)/3]) and filtered by FillOptions::lcd_filter; byte 3p + k of a
+//         row is subpixel k of display pixel p, left to right. So the bytes are in the PANEL's
+//         order, FillOptions::lcd_order: R, G, B for Rgb, B, G, R for Bgr (image.hpp's LcdOrder).
+//         The bytes themselves do not depend on the order (they are positions on the screen);
+//         the order says which colour each is, and blend_lcd_mask must be given the same one.
 enum class CoverageFormat : std::uint8_t { Gray, Lcd };
 
+// --- Drawing into a target that already holds coverage ----------------------------------------
+// How a fill's coverage b meets the coverage a the target holds (both in [0, 1]; in a MaskView
+// the bytes a, b in 0..255, b being the byte a Replace fill would write):
+//   Replace: out = b on EVERY pixel of the target (0 where the fill does not reach: the target
+//            is cleared). The default, and what a fill of one shape into its own mask wants.
+//   Over:    out = a + b − a·b; in bytes a + b − round(a·b/255). Alpha compositing's "over" of
+//            coverage: the union of shapes drawn one after another (icons, the paths of a
+//            drawing), exact where they are disjoint and where one covers a pixel fully, and the
+//            expected coverage of the union where two edges cross a pixel independently (two
+//            half-covered pixels make ¾). Symmetric and associative (in real numbers), so the
+//            drawing order does not matter.
+//   Add:     out = min(a + b, 1); in bytes min(a + b, 255). Exact for pieces that do not overlap
+//            but share edges (a shape cut into tiles, a glyph assembled from parts): a pixel
+//            covered ½ by each side of a shared edge becomes 1, where Over leaves a seam of ¾.
+//            Over-counts where the pieces overlap.
+// Over and Add leave pixels the fill does not reach untouched, and LCD coverage combines each
+// subpixel byte alike.
+enum class CoverageCombine : std::uint8_t { Replace, Over, Add };
+
 // Every choice a fill makes. Each default is the plain fill: NonZero, Accumulate, flattening at
-// kDefaultRasterTolerancePx with WangUniform, no origin shift, gray coverage.
+// kDefaultRasterTolerancePx with WangUniform, no origin shift, gray coverage, replacing the
+// target.
 struct FillOptions {
     FillRule rule = FillRule::NonZero;
     // Accurate is implemented for fill_path (either target type); fill of polylines is Accumulate
@@ -109,8 +130,15 @@ struct FillOptions {
     Vec2 origin{};
     // Lcd is implemented for fill_path into a MaskView only.
     CoverageFormat format = CoverageFormat::Gray;
-    LcdOrder lcd_order = LcdOrder::Rgb;         // Lcd only: the panel's subpixel order
+    LcdOrder lcd_order = LcdOrder::Rgb;         // Lcd only: the panel's subpixel order, which
+                                                // is the mask's byte order (see CoverageFormat)
     LcdFilter lcd_filter = kLcdFilterDefault;   // Lcd only
+    // What becomes of the coverage the target holds (above). Every fill, every target type and
+    // format takes it. Over and Add draw the fill into scratch the size of its control box
+    // (clipped to the target) and combine that with the target, so they cost a little more than
+    // Replace, and the fill's coverage b may differ from a Replace fill's by float rounding
+    // (at most one 8-bit step), the points being moved by whole pixels into the scratch.
+    CoverageCombine combine = CoverageCombine::Replace;
 };
 
 // --- Gamma / contrast ---------------------------------------------------------------------------
@@ -139,9 +167,11 @@ public:
     Rasterizer& operator=(Rasterizer&&) noexcept;
 
     // Fills the closed polygons `lines` (each contour closed implicitly), moved by
-    // `options.origin`, into `target` with `options.rule`, writing EVERY pixel of the target (0
-    // where nothing covers it: clearing is part of the call): 8-bit alpha round(coverage·255)
-    // into a MaskView, coverage in [0, 1] (not quantized) into a FloatMaskView.
+    // `options.origin`, into `target` with `options.rule`: 8-bit alpha round(coverage·255)
+    // into a MaskView, coverage in [0, 1] (not quantized) into a FloatMaskView. With
+    // CoverageCombine::Replace (the default) it writes EVERY pixel of the target (0 where
+    // nothing covers it: clearing is part of the call); Over and Add combine the coverage with
+    // the target's and leave the pixels the fill does not reach as they were.
     // Errors, each leaving the target unchanged: an option this fill does not implement
     // (OverlapMode::Accurate or CoverageFormat::Lcd, named in the message), a target dimension
     // negative or > kMaxBitmapDim, a null target with nonzero size, more than kMaxEdges
@@ -153,7 +183,8 @@ public:
 
     // Flattens `path` mapped by `transform` (to target pixels; then moved by `options.origin`)
     // with `options.flatten` into a reused internal Polylines, then fills it as above, in
-    // `options.format` with `options.overlap`. For FlattenMethod::WangUniform the vertices are
+    // `options.format` with `options.overlap`, replacing or combining with the target's coverage
+    // as `options.combine` says. For FlattenMethod::WangUniform the vertices are
     // error-balanced (same step count and distance bound, zero mean area error per chord), so the
     // polyline differs from flatten()'s. When the path's pixel box is narrow (at most 93 px
     // wide: glyphs at text sizes), those vertices are rounded to float relative to the box before
@@ -177,7 +208,7 @@ public:
     std::size_t scratch_capacity_bytes() const;
 
 private:
-    struct FeatureScratch;  // LCD and accurate-overlap scratch (src/raster/overlap.hpp)
+    struct FeatureScratch;  // LCD, accurate-overlap and combine scratch (src/raster/overlap.hpp)
 
     template <typename View>
     Status fill_impl(const Polylines& lines, FillRule rule, const View& target, Vec2 origin);
@@ -189,6 +220,14 @@ private:
                           const FillOptions& options);
     Status fill_path_lcd(const Path& path, const Affine& transform, const MaskView& target,
                          const FillOptions& options);
+    // CoverageCombine::Over and Add (src/raster/combine.cpp); `transform` has the origin in it.
+    Status fill_combined(const Polylines& lines, const MaskView& target, const FillOptions& options);
+    Status fill_combined(const Polylines& lines, const FloatMaskView& target,
+                         const FillOptions& options);
+    Status fill_path_combined(const Path& path, const Affine& transform, const MaskView& target,
+                              const FillOptions& options);
+    Status fill_path_combined(const Path& path, const Affine& transform,
+                              const FloatMaskView& target, const FillOptions& options);
     FeatureScratch& features();
 
     std::vector<float> acc_;            // per-band cell deltas; all zero between calls

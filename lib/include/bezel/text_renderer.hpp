@@ -13,6 +13,7 @@
 #include "bezel/expected.hpp"
 #include "bezel/font.hpp"
 #include "bezel/font_collection.hpp"
+#include "bezel/geometry.hpp"
 #include "bezel/glyph.hpp"
 #include "bezel/image.hpp"
 #include "bezel/layout.hpp"
@@ -25,7 +26,7 @@ struct TextRenderOptions {
     ShapeOptions shape;
     LayoutOptions layout;
     CoverageFormat format = CoverageFormat::Gray;   // Lcd: subpixel text (RGB(A) pages only)
-    LcdOrder lcd_order = LcdOrder::Rgb;
+    LcdOrder lcd_order = LcdOrder::Rgb;   // Lcd: the panel's subpixel order (image.hpp)
     // Glyph outlines hinted by FreeType (font.hpp). Advances and positions stay HarfBuzz's
     // unhinted ones; a glyph hinted horizontally (Full, Auto) is drawn at the whole pixel nearest
     // its pen, since its stems were fitted to the grid at a whole-pixel origin; None and Light
@@ -85,8 +86,9 @@ public:
     Shaper& shaper();    // the first font's
     FontCollection& fonts();
     GlyphCache& cache();
-    // The .notdef glyphs (characters the font does not map) of the last render, render_gray or
-    // render_gray_streaming call that got as far as laying out the text; all zero before.
+    // The .notdef glyphs (characters the font does not map) of the last render, render_gray,
+    // render_gray_streaming, layout or draw (of a string) call that got as far as laying out
+    // the text; all zero before.
     const MissingGlyphs& missing_glyphs() const;
     // Whether the text of the last call holds a glyph drawn in colour. render_gray and
     // render_gray_streaming refuse such text with an Error, after laying it out and before
@@ -101,7 +103,7 @@ public:
     // ShapeOptions::variations apply to the first font (layout.hpp).
     // Shapes, lays out and draws `utf8` onto a new image sized to the layout (RGBA: background
     // filled, glyphs blended in linear light as image.hpp's blend functions, through the
-    // coverage curve of options.coverage). Errors as layout_text and coverage_curve, plus an
+    // coverage curve of options.coverage): draw() onto an Image of the background. Errors as layout_text and coverage_curve, plus an
     // image larger than kMaxImageDim, and CoverageFormat::Lcd with a background that is not
     // opaque (one alpha channel cannot hold three subpixel coverages).
     Expected<Image> render(std::string_view utf8, const TextRenderOptions& options);
@@ -118,12 +120,45 @@ public:
     Status render_gray_streaming(std::string_view utf8, const TextRenderOptions& options,
                                  Mask& page, PageRowsSink& rows_sink);
 
+    // --- Drawing into the caller's pixels (a toolkit's surface or atlas) ---------------------
+    // Shapes and lays out `utf8` as render() would, without drawing: the glyphs' pen positions,
+    // the lines (baselines, ascent, descent, widths) and the page size render() would make
+    // (width_px × height_px, margins included), all in pixels, y down, relative to the page's
+    // top-left corner. Sets missing_glyphs(), last_text_has_color() and
+    // last_text_svg_glyphs(). Errors as layout_text.
+    Expected<TextLayout> layout(std::string_view utf8, const TextRenderOptions& options);
+    // Lays out `utf8` and blends it onto `target` with the page's top-left corner (what is (0, 0)
+    // in layout()) at `origin_px` in target pixels, which may be fractional (pens are then
+    // placed as render() places them, from the moved positions) or put the text partly or
+    // wholly outside the target (it is clipped to the target, not to the page: a glyph that
+    // overhangs the margins, which render() cuts off, is drawn whole). Nothing else is
+    // written: no background is filled, and only pixels under glyphs change, each blended in
+    // linear light by image.hpp's functions (blend_mask through the coverage curve of
+    // options.foreground over options.background, blend_lcd_mask in options.lcd_order, colour
+    // glyphs by blend_image "over"). options.background is not drawn: it is the colour the
+    // text weight is made for (the coverage curve) and should be the colour under the text. A Gray8 target shows colour
+    // glyphs and a coloured foreground as their luma (image.hpp). Drawing onto an Image of
+    // options.background at origin (0, 0) gives render()'s page, pixel for pixel.
+    // Errors, each before any pixel is written: layout_text's and coverage_curve's; a target of
+    // negative size, larger than kMaxImageDim, or null with nonzero size; a non-finite origin;
+    // CoverageFormat::Lcd onto a Gray8 target or with a background that is not opaque (LCD text
+    // is for opaque surfaces; its blend on a pixel that is not opaque is image.hpp's).
+    Status draw(std::string_view utf8, const TextRenderOptions& options, const PixelView& target,
+                Point origin_px);
+    // Draws a layout made by layout() of this renderer (so a toolkit can measure, place and draw
+    // with one shaping), as above. `options` should be those it was laid out with: the glyphs
+    // are drawn at options' size and variations. Errors as above, plus a layout naming a font
+    // this renderer does not have.
+    Status draw(const TextLayout& layout, const TextRenderOptions& options,
+                const PixelView& target, Point origin_px);
+
 private:
     struct Impl;
-    template <typename Page, typename MakePage, typename Blend>
-    Status draw(std::string_view utf8, const TextRenderOptions& options, Page& page,
-                MakePage&& make_page, Blend&& blend, bool gray_page,
-                PageRowsSink* rows_sink = nullptr);
+    Expected<TextLayout> lay_out(std::string_view utf8, const TextRenderOptions& options,
+                                 bool gray_page);
+    Status draw_glyphs(const TextLayout& layout, const TextRenderOptions& options,
+                       const PixelView& target, Point origin, const CoverageCurve& curve,
+                       PageRowsSink* rows_sink);
     Status draw_gray(std::string_view utf8, const TextRenderOptions& options, Mask& page,
                      PageRowsSink* rows_sink);
     explicit TextRenderer(std::unique_ptr<Impl> impl);

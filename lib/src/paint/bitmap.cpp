@@ -149,45 +149,13 @@ void premultiply(const Image& image, const RgbaView& target) {
     }
 }
 
-// Per pixel, with α = (a/255)·opacity and S the glyph's straight colour, exactly the arithmetic
-// of blend_mask (image/blend.cpp), so an opaque-colour glyph blends as its mask would:
-//   opaque page:  out.c = enc(dec(D) + (dec(S) − dec(D))·α)
-//   otherwise:    out.a = α + Da·(1 − α),  out.c = enc((dec(S)·α + dec(D)·Da·(1 − α)) / out.a)
+// image.hpp's blend_image on the page's view, the glyph read as Rgba8Premultiplied: the same
+// arithmetic as blend_mask, so an opaque-colour glyph blends as its mask would.
 void blend_rgba(Image& page, ConstRgbaView glyph, int x, int y, float opacity) {
-    if (glyph.data == nullptr || !(opacity > 0.0f)) return;
-    opacity = std::min(opacity, 1.0f);
-    // The part of the glyph inside the page, in 64-bit so that positions near INT_MAX are safe.
-    const long long gx0 = std::max(0LL, -static_cast<long long>(x));
-    const long long gy0 = std::max(0LL, -static_cast<long long>(y));
-    const long long gx1 = std::min<long long>(glyph.width, static_cast<long long>(page.width()) - x);
-    const long long gy1 = std::min<long long>(glyph.height, static_cast<long long>(page.height()) - y);
-    for (long long gy = gy0; gy < gy1; ++gy) {
-        const std::uint8_t* s = glyph.row(static_cast<int>(gy)) + 4 * gx0;
-        Rgba8* d = page.row(static_cast<int>(y + gy)) + (x + gx0);
-        for (long long gx = gx0; gx < gx1; ++gx, s += 4, ++d) {
-            if (s[3] == 0) continue;
-            const float alpha = (s[3] / 255.0f) * opacity;
-            const std::uint8_t straight[3] = {straight_byte(s[0], s[3]), straight_byte(s[1], s[3]),
-                                              straight_byte(s[2], s[3])};
-            std::uint8_t* ch[3] = {&d->r, &d->g, &d->b};
-            if (d->a == 255) {
-                for (int k = 0; k < 3; ++k) {
-                    const float dl = srgb_decode(*ch[k]);
-                    *ch[k] = srgb_encode(dl + (srgb_decode(straight[k]) - dl) * alpha);
-                }
-                continue;
-            }
-            const float da = d->a / 255.0f;
-            const float out_a = alpha + da * (1.0f - alpha);
-            if (out_a <= 0.0f) continue;
-            for (int k = 0; k < 3; ++k) {
-                const float dl = srgb_decode(*ch[k]);
-                const float mixed = srgb_decode(straight[k]) * alpha + dl * da * (1.0f - alpha);
-                *ch[k] = srgb_encode(mixed / out_a);
-            }
-            d->a = static_cast<std::uint8_t>(std::lround(out_a * 255.0f));
-        }
-    }
+    blend_image(page.view(),
+                ConstPixelView(glyph.data, glyph.width, glyph.height, glyph.stride,
+                               PixelFormat::Rgba8Premultiplied),
+                x, y, opacity);
 }
 
 }  // namespace bezel

@@ -11,10 +11,11 @@
 // stays 255 and the total coverage is unchanged (up to rounding) when the outline keeps
 // kLcdPaddingPx display pixels from the target's sides.
 //
-// Order: the bytes of a display pixel are always R, G, B in memory (FreeType's FT_PIXEL_MODE_LCD
-// layout); FillOptions::lcd_order is the PANEL's subpixel order. On an RGB panel red lights the
-// left third, so R takes subpixel 3p; on a BGR panel red is the right third, so R takes subpixel
-// 3p + 2 — the Bgr output is the Rgb output reversed within each pixel.
+// Order: byte 3p + k of a row is subpixel k of display pixel p, left to right (FreeType's
+// FT_PIXEL_MODE_LCD layout), whatever the panel: the samples are positions on the screen, so
+// the bytes do not depend on FillOptions::lcd_order, which names the colours they are (R, G, B
+// on an RGB panel, B, G, R on a BGR one; image.hpp's LcdOrder). blend_lcd_mask, given the same
+// order, sends each byte to its colour.
 //
 // Memory: the float samples are processed in bands of at most kMaxBandCells floats (the path is
 // re-flattened per band, which only tall targets need), so scratch stays bounded.
@@ -31,9 +32,7 @@ namespace {
 
 constexpr int kFilterReach = 2;  // subpixels the 5-tap filter reads on each side
 
-void filter_row(const float* samples, int width, const LcdFilter& f, LcdOrder order,
-                std::uint8_t* out) {
-    const bool reverse = order == LcdOrder::Bgr;
+void filter_row(const float* samples, int width, const LcdFilter& f, std::uint8_t* out) {
     for (int k = 0; k < width; ++k) {
         // samples[k + kFilterReach] is subpixel k.
         const float* s = samples + k;
@@ -41,8 +40,7 @@ void filter_row(const float* samples, int width, const LcdFilter& f, LcdOrder or
                          f.taps[2] * double(s[2]) + f.taps[3] * double(s[3]) +
                          f.taps[4] * double(s[4]);
         const double byte = std::min(255.0, v * (255.0 / 256.0) + 0.5);
-        const int at = reverse ? k - k % 3 + (2 - k % 3) : k;
-        out[at] = static_cast<std::uint8_t>(byte);
+        out[k] = static_cast<std::uint8_t>(byte);
     }
 }
 
@@ -78,7 +76,7 @@ Status Rasterizer::fill_path_lcd(const Path& path, const Affine& transform,
         // The first band's fill checks the path; a later band only moves the rows.
         if (Status st = fill_path_gray(path, m, band, options); !st) return st;
         for (int r = 0; r < rows; ++r)
-            filter_row(band.row(r), W, options.lcd_filter, options.lcd_order, target.row(y0 + r));
+            filter_row(band.row(r), W, options.lcd_filter, target.row(y0 + r));
     }
     return ok_status();
 }

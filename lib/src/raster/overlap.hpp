@@ -1,5 +1,5 @@
 // Private: exact coverage of the filled REGION, for overlapping contours (OverlapMode::Accurate),
-// and the scratch the LCD and accurate fills keep in a Rasterizer.
+// and the scratch the LCD, accurate-overlap and combining fills keep in a Rasterizer.
 //
 // Why plain accumulation over-darkens. Area accumulation gives each pixel ∫ w(x, y) dA, the
 // integral of the winding number, clamped to 1. Where two contours with the same orientation
@@ -90,6 +90,9 @@ namespace bezel {
 struct Rasterizer::FeatureScratch {
     raster_detail::OverlapScratch overlap;
     std::vector<float> lcd_samples;  // 3× horizontal float coverage, lcd.cpp
+    // A combining fill's coverage before it meets the target (combine.cpp).
+    std::vector<std::uint8_t> combine_bytes;
+    std::vector<float> combine_floats;
 };
 
 }  // namespace bezel

@@ -128,9 +128,11 @@ Status Rasterizer::fill_path_gray(const Path& path, const Affine& transform, con
     return ok_status();
 }
 
-// lcd.cpp samples through this.
+// lcd.cpp samples through these, combine.cpp fills its scratch through them.
 template Status Rasterizer::fill_path_gray<FloatMaskView>(const Path&, const Affine&,
                                                           const FloatMaskView&, const FillOptions&);
+template Status Rasterizer::fill_path_gray<MaskView>(const Path&, const Affine&, const MaskView&,
+                                                     const FillOptions&);
 
 namespace {
 
@@ -153,6 +155,8 @@ Status Rasterizer::fill_path(const Path& path, const Affine& transform, const Ma
                              const FillOptions& options) {
     if (!options.origin.is_finite()) return Error{kOriginNotFinite};
     const Affine m = moved_by(transform, options.origin);
+    if (options.combine != CoverageCombine::Replace)
+        return fill_path_combined(path, m, target, options);
     if (options.format == CoverageFormat::Lcd) return fill_path_lcd(path, m, target, options);
     return fill_path_gray(path, m, target, options);
 }
@@ -163,6 +167,8 @@ Status Rasterizer::fill_path(const Path& path, const Affine& transform,
         return Error{"fill_path: CoverageFormat::Lcd is not implemented for a float target (LCD "
                      "coverage is written as bytes into a MaskView)"};
     if (!options.origin.is_finite()) return Error{kOriginNotFinite};
+    if (options.combine != CoverageCombine::Replace)
+        return fill_path_combined(path, moved_by(transform, options.origin), target, options);
     return fill_path_gray(path, moved_by(transform, options.origin), target, options);
 }
 

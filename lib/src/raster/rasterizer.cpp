@@ -191,12 +191,14 @@ const char* unsupported_for_polylines(const FillOptions& options) {
 Status Rasterizer::fill(const Polylines& lines, const MaskView& target,
                         const FillOptions& options) {
     if (const char* why = unsupported_for_polylines(options)) return Error{why};
+    if (options.combine != CoverageCombine::Replace) return fill_combined(lines, target, options);
     return fill_impl(lines, options.rule, target, options.origin);
 }
 
 Status Rasterizer::fill(const Polylines& lines, const FloatMaskView& target,
                         const FillOptions& options) {
     if (const char* why = unsupported_for_polylines(options)) return Error{why};
+    if (options.combine != CoverageCombine::Replace) return fill_combined(lines, target, options);
     return fill_impl(lines, options.rule, target, options.origin);
 }
 

@@ -52,6 +52,9 @@ Status check_options(GlyphId gid, const GlyphRenderOptions& o) {
                      "dilated outline overlaps itself)"};
     if (o.fill.origin.x != 0 || o.fill.origin.y != 0)
         return Error{glyph_label(gid) + ": fill.origin must be zero (offset_px places the pen)"};
+    if (o.fill.combine != CoverageCombine::Replace)
+        return Error{glyph_label(gid) + ": fill.combine must be Replace (a glyph bitmap is its "
+                     "own coverage; a cache keeps it to blend many times)"};
     return ok_status();
 }
 

@@ -110,17 +110,14 @@ const MissingGlyphs& TextRenderer::missing_glyphs() const { return impl_->missin
 bool TextRenderer::last_text_has_color() const { return impl_->has_color; }
 std::size_t TextRenderer::last_text_svg_glyphs() const { return impl_->svg_glyphs; }
 
-// Shapes and lays out `utf8`, makes the page with make_page(width, height), then hands each
-// placed glyph's cached glyph and its top-left pixel to blend(page, glyph, x, y). One loop for the
-// RGBA and the gray page; a gray page refuses text with colour glyphs before it is made.
-template <typename Page, typename MakePage, typename Blend>
-Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& options, Page& page,
-                          MakePage&& make_page, Blend&& blend, bool gray_page,
-                          PageRowsSink* rows_sink) {
+// Shapes and lays out `utf8` with every font prepared, and notes the text's missing, colour and
+// SVG glyphs; a gray page refuses text with colour glyphs here, before it is made.
+Expected<TextLayout> TextRenderer::lay_out(std::string_view utf8, const TextRenderOptions& options,
+                                           bool gray_page) {
     Impl& r = *impl_;
     // A bitmap-only colour font drawn without colour would have no glyphs at all.
     r.fonts.set_outlines_only(!options.color.enabled);
-    if (auto ok = r.prepare_fonts(options.shape); !ok) return ok;
+    if (auto ok = r.prepare_fonts(options.shape); !ok) return ok.error();
     r.missing = MissingGlyphs{};
     r.has_color = false;
     r.svg_glyphs = 0;
@@ -128,7 +125,7 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     if (!layout) return layout.error();
     r.missing = find_missing_glyphs(*layout, utf8);
     // Fonts the fallback added while laying out.
-    if (auto ok = r.prepare_fonts(options.shape); !ok) return ok;
+    if (auto ok = r.prepare_fonts(options.shape); !ok) return ok.error();
     for (const PlacedGlyph& g : layout->glyphs) {
         const ColorFormat format = r.slots[g.font].rasterizer->color_format(g.gid);
         if (format == ColorFormat::Svg) ++r.svg_glyphs;
@@ -137,16 +134,34 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     if (gray_page && r.has_color)
         return Error{"render_gray: the text holds colour glyphs, which a gray page cannot show "
                      "(render() draws it in RGBA)"};
+    return layout;
+}
 
-    const double w = std::ceil(layout->width_px), h = std::ceil(layout->height_px);
+namespace {
+
+// The page render() and render_gray() make for `layout`: at least one pixel (empty text still
+// gives a background image), at most kMaxImageDim a side and kMaxPagePixels in all.
+Status page_size(const TextLayout& layout, int& width, int& height) {
+    const double w = std::ceil(layout.width_px), h = std::ceil(layout.height_px);
     if (!(w <= kMaxImageDim && h <= kMaxImageDim && w * h <= kMaxPagePixels))
         return Error{"text page of " + whole_number(w) + "x" + whole_number(h) +
                      " px is too large (at most " + std::to_string(kMaxImageDim) + " px a side, " +
                      std::to_string(static_cast<long>(kMaxPagePixels)) + " px in all)"};
-    // A page is at least one pixel: empty text still gives a (background) image.
-    const int page_h = std::max(1, static_cast<int>(h));
-    page = make_page(std::max(1, static_cast<int>(w)), page_h);
+    width = std::max(1, static_cast<int>(w));
+    height = std::max(1, static_cast<int>(h));
+    return ok_status();
+}
 
+}  // namespace
+
+// Blends each placed glyph of `layout`, moved by `origin`, from the cache onto `target`: colour
+// glyphs "over", masks in the foreground through `curve`. With a sink, rows of the target are
+// reported final as no glyph still to come reaches them.
+Status TextRenderer::draw_glyphs(const TextLayout& layout, const TextRenderOptions& options,
+                                 const PixelView& target, Point origin,
+                                 const CoverageCurve& curve, PageRowsSink* rows_sink) {
+    Impl& r = *impl_;
+    const int page_h = target.height;
     GlyphRenderOptions glyph;
     glyph.size_px = options.shape.size_px;
     glyph.fill.format = options.format;
@@ -160,19 +175,20 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     const bool subpixel_y = options.hinting == Hinting::None &&
                             (options.shape.direction == Direction::TopToBottom ||
                              options.shape.direction == Direction::BottomToTop);
-    // The cached glyph at g's pen, with its top-left pixel; null for a pen far off the page (a
-    // huge margin is refused by the size check above; this guards the int conversions) or an
-    // empty glyph.
+    // The cached glyph at g's pen, with its top-left pixel; null for an empty glyph or a pen
+    // more than 2·kMaxImageDim off the target's origin, which no glyph (at most kMaxBitmapDim
+    // wide) can carry onto a target of at most kMaxImageDim (this guards the int conversions).
     auto look_up = [&](const PlacedGlyph& g, int& x, int& y) -> Expected<const CachedGlyph*> {
+        const double pen_x = g.x_px + origin.x, pen_y = g.y_px + origin.y;
         const double quarters = whole_pixel_pen
-                                    ? std::floor(g.x_px + 0.5) * kSubpixelBins
-                                    : std::floor(g.x_px * kSubpixelBins + 0.5);
+                                    ? std::floor(pen_x + 0.5) * kSubpixelBins
+                                    : std::floor(pen_x * kSubpixelBins + 0.5);
         const double column = std::floor(quarters / kSubpixelBins);
         glyph.offset_px.x = (quarters - column * kSubpixelBins) / kSubpixelBins;
-        double row = std::floor(g.y_px + 0.5);
+        double row = std::floor(pen_y + 0.5);
         glyph.offset_px.y = 0;
         if (subpixel_y) {
-            const double bins = std::floor(g.y_px * kSubpixelBins + 0.5);
+            const double bins = std::floor(pen_y * kSubpixelBins + 0.5);
             row = std::floor(bins / kSubpixelBins);
             glyph.offset_px.y = (bins - row * kSubpixelBins) / kSubpixelBins;
         }
@@ -187,7 +203,7 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
         y = static_cast<int>(row) - c.box.top;
         return &c;
     };
-    const std::vector<PlacedGlyph>& glyphs = layout->glyphs;
+    const std::vector<PlacedGlyph>& glyphs = layout.glyphs;
     // first_row[i]: the top row of glyphs i.. (page_h when none reaches the page).
     std::vector<int> first_row;
     if (rows_sink != nullptr) {
@@ -204,7 +220,20 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
         int x = 0, y = 0;
         auto c = look_up(glyphs[i], x, y);
         if (!c) return c.error();
-        if (*c != nullptr) blend(page, **c, x, y);
+        if (*c != nullptr) {
+            const CachedGlyph& cached = **c;
+            if (cached.box.color)
+                blend_image(target,
+                            ConstPixelView(cached.rgba.data, cached.rgba.width, cached.rgba.height,
+                                           cached.rgba.stride, PixelFormat::Rgba8Premultiplied),
+                            x, y);
+            else if (options.format == CoverageFormat::Gray)
+                blend_mask(target, cached.mask, x, y, options.foreground, curve);
+            else
+                // The mask's bytes are in the panel's order (raster.hpp's CoverageFormat::Lcd).
+                blend_lcd_mask(target, cached.mask, x, y, options.foreground, options.lcd_order,
+                               curve);
+        }
         if (rows_sink != nullptr && first_row[i + 1] > reported) {
             reported = first_row[i + 1];
             rows_sink->rows_final(reported);
@@ -214,28 +243,68 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
     return ok_status();
 }
 
-Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOptions& options) {
-    // Subpixel coverage is three coverages a pixel; one alpha channel cannot keep them, so LCD
-    // text is blended only onto an opaque page.
+namespace {
+
+// LCD text needs a colour target over opaque paper: subpixel coverage is three coverages a
+// pixel, which one alpha channel cannot keep and one gray byte cannot show.
+Status check_lcd(const TextRenderOptions& options, const char* call) {
     if (options.format == CoverageFormat::Lcd && options.background.a != 255)
-        return Error{"render: LCD coverage needs an opaque background (alpha 255)"};
+        return Error{std::string(call) + ": LCD coverage needs an opaque background (alpha 255)"};
+    return ok_status();
+}
+
+}  // namespace
+
+Expected<TextLayout> TextRenderer::layout(std::string_view utf8, const TextRenderOptions& options) {
+    return lay_out(utf8, options, false);
+}
+
+Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& options,
+                          const PixelView& target, Point origin_px) {
+    auto laid_out = lay_out(utf8, options, false);
+    if (!laid_out) return laid_out.error();
+    return draw(*laid_out, options, target, origin_px);
+}
+
+Status TextRenderer::draw(const TextLayout& layout, const TextRenderOptions& options,
+                          const PixelView& target, Point origin_px) {
+    if (Status ok = check_lcd(options, "draw"); !ok) return ok;
+    if (options.format == CoverageFormat::Lcd && target.format == PixelFormat::Gray8)
+        return Error{"draw: LCD coverage needs an RGBA or BGRA target (a gray pixel has no "
+                     "subpixels)"};
+    if (target.width < 0 || target.height < 0 || target.width > kMaxImageDim ||
+        target.height > kMaxImageDim)
+        return Error{"draw: target " + std::to_string(target.width) + "x" +
+                     std::to_string(target.height) + " is outside 0.." +
+                     std::to_string(kMaxImageDim) + " px a side"};
+    if (target.data == nullptr && target.width > 0 && target.height > 0)
+        return Error{"draw: target " + std::to_string(target.width) + "x" +
+                     std::to_string(target.height) + " has no pixel memory (null data)"};
+    if (!std::isfinite(origin_px.x) || !std::isfinite(origin_px.y))
+        return Error{"draw: origin is not finite (NaN or infinity)"};
+    // The fonts at the coordinates these options shape at (a layout made with other variations
+    // would be drawn with these glyphs).
+    if (Status ok = impl_->prepare_fonts(options.shape); !ok) return ok;
+    for (const PlacedGlyph& g : layout.glyphs)
+        if (g.font >= impl_->slots.size())
+            return Error{"draw: the layout names font " + std::to_string(g.font) +
+                         ", which this renderer does not have (lay it out with this renderer)"};
     auto curve = coverage_curve(options.foreground, options.background, options.coverage);
     if (!curve) return curve.error();
-    Image out;
-    auto drawn = draw<Image>(
-        utf8, options, out, [&](int w, int h) { return Image(w, h, options.background); },
-        [&](Image& onto, const CachedGlyph& glyph, int x, int y) {
-            if (glyph.box.color)
-                blend_rgba(onto, glyph.rgba, x, y);
-            else if (options.format == CoverageFormat::Gray)
-                blend_mask(onto, glyph.mask, x, y, options.foreground, *curve);
-            else
-                // LCD coverage is stored R, G, B per pixel whatever the panel's order (a BGR
-                // panel's samples are reversed by the fill), so the bytes are RGB here.
-                blend_lcd_mask(onto, glyph.mask, x, y, options.foreground, LcdOrder::Rgb, *curve);
-        },
-        false);
-    if (!drawn) return drawn.error();
+    return draw_glyphs(layout, options, target, origin_px, *curve, nullptr);
+}
+
+Expected<Image> TextRenderer::render(std::string_view utf8, const TextRenderOptions& options) {
+    if (Status ok = check_lcd(options, "render"); !ok) return ok.error();
+    auto curve = coverage_curve(options.foreground, options.background, options.coverage);
+    if (!curve) return curve.error();
+    auto laid_out = lay_out(utf8, options, false);
+    if (!laid_out) return laid_out.error();
+    int w = 0, h = 0;
+    if (Status ok = page_size(*laid_out, w, h); !ok) return ok.error();
+    Image out(w, h, options.background);
+    if (Status ok = draw_glyphs(*laid_out, options, out.view(), {}, *curve, nullptr); !ok)
+        return ok.error();
     return out;
 }
 
@@ -261,14 +330,17 @@ Status TextRenderer::draw_gray(std::string_view utf8, const TextRenderOptions& o
         return Error{"render_gray: needs opaque gray foreground and background colours"};
     auto curve = coverage_curve(fg, bg, options.coverage);
     if (!curve) return curve.error();
-    return draw<Mask>(
-        utf8, options, page,
-        // The paper's byte written once (a zeroed page then filled would write it twice).
-        [&](int w, int h) { return Mask(w, h, bg.r); },
-        [&](Mask& onto, const CachedGlyph& glyph, int x, int y) {
-            blend_mask_gray(onto.view(), glyph.mask, x, y, fg.r, *curve);
-        },
-        true, rows_sink);
+    auto laid_out = lay_out(utf8, options, true);
+    if (!laid_out) return laid_out.error();
+    int w = 0, h = 0;
+    if (Status ok = page_size(*laid_out, w, h); !ok) return ok;
+    // The paper's byte written once (a zeroed page then filled would write it twice).
+    page = Mask(w, h, bg.r);
+    const MaskView v = page.view();
+    // A gray page is a Gray8 view: blend_mask there is blend_mask_gray, bit for bit.
+    return draw_glyphs(*laid_out, options, PixelView{v.data, v.width, v.height, v.stride,
+                                                     PixelFormat::Gray8},
+                       {}, *curve, rows_sink);
 }
 
 }  // namespace bezel
