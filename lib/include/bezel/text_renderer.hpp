@@ -136,8 +136,9 @@ public:
     // linear light by image.hpp's functions (blend_mask through the coverage curve of
     // options.foreground over options.background, blend_lcd_mask in options.lcd_order, colour
     // glyphs by blend_image "over"). options.background is not drawn: it is the colour the
-    // text weight is made for (the coverage curve) and should be the colour under the text. A Gray8 target shows colour
-    // glyphs and a coloured foreground as their luma (image.hpp). Drawing onto an Image of
+    // text weight is made for (the coverage curve) and should be the colour under the text. A
+    // Gray8 target shows colour glyphs and a coloured foreground as their luma (image.hpp).
+    // Drawing onto an Image of
     // options.background at origin (0, 0) gives render()'s page, pixel for pixel.
     // Errors, each before any pixel is written: layout_text's and coverage_curve's; a target of
     // negative size, larger than kMaxImageDim, or null with nonzero size; a non-finite origin;
