@@ -98,13 +98,13 @@ bezel::Status gather(ImFontAtlas& atlas, int index, std::vector<bool>& taken, So
         return bezel::Error{name + ": the font has no vertical metrics (ascender − descender is " +
                             std::to_string(height_units) + " units)"};
     const double px_per_unit = cfg.SizePixels / height_units;
-    // ImGui's line metrics, as its stb_truetype builder makes them: each rounded away from the
-    // baseline, plus a pixel.
+    // ImGui's line metrics, as its stb_truetype builder makes them: each moved a pixel away
+    // from the baseline, then truncated toward zero (IM_FLOOR).
     src.cfg = &cfg;
-    src.ascent = std::floor(static_cast<float>(m.ascender * px_per_unit) +
-                            (m.ascender > 0 ? 1.0f : -1.0f));
-    src.descent = std::floor(static_cast<float>(m.descender * px_per_unit) +
-                             (m.descender > 0 ? 1.0f : -1.0f));
+    src.ascent = IM_FLOOR(static_cast<float>(m.ascender * px_per_unit) +
+                          (m.ascender > 0 ? 1.0f : -1.0f));
+    src.descent = IM_FLOOR(static_cast<float>(m.descender * px_per_unit) +
+                           (m.descender > 0 ? 1.0f : -1.0f));
 
     const unsigned flags = cfg.FontBuilderFlags | atlas.FontBuilderFlags;
     bezel::GlyphRenderOptions options;
