@@ -2,10 +2,26 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 
 namespace bezel_imgui::detail {
 
 namespace {
+// `glyph` (prepared at pen offset 0, GlyphBoxMode::Tight; `b` its path's tight bounds) moved to
+// the pen offset `offset`: its box by GlyphBoxMode::Tight's rule (columns floor(x0 + dx) ..
+// ceil(x1 + dx) of the outline's tight bounds, rows likewise), so that draw() fills it there
+// without loading the outline again.
+void move_pen(bezel::PreparedGlyph& glyph, const bezel::Rect& b, bezel::Vec2 offset) {
+    glyph.options.offset_px = offset;
+    if (b.is_empty()) return;
+    const double x0 = std::floor(b.x0 + offset.x), x1 = std::ceil(b.x1 + offset.x);
+    const double y0 = std::floor(b.y0 + offset.y), y1 = std::ceil(b.y1 + offset.y);
+    glyph.box.left = static_cast<int>(x0);
+    glyph.box.top = -static_cast<int>(y0);
+    glyph.box.width = static_cast<int>(x1 - x0);
+    glyph.box.height = static_cast<int>(y1 - y0);
+}
+
 struct Phase {
     int kx = 0, ky = 0;           // pen at (kx/h, ky/v) px
     bezel::GlyphBox box;
@@ -25,13 +41,25 @@ bezel::Status render_glyph_texels(bezel::GlyphRasterizer& rasterizer, bezel::Gly
     out.offset = store.size();
     // Texel ranges over every render: m = h·(left + c) − kx, n = v·(row − top) − ky.
     long m_min = LONG_MAX, m_max = LONG_MIN, n_min = LONG_MAX, n_max = LONG_MIN;
+    options.offset_px = {0, 0};
+    options.box = bezel::GlyphBoxMode::Tight;
+    auto prepared = rasterizer.prepare(gid, options);
+    if (!prepared) return prepared.error();
+    out.advance_px = static_cast<float>(prepared->box.advance_px);
+    const bezel::Rect bounds = prepared->path.bounds();
     for (int ky = 0; ky < v; ++ky) {
         for (int kx = 0; kx < h; ++kx) {
-            options.offset_px = {static_cast<double>(kx) / h, static_cast<double>(ky) / v};
-            auto glyph = rasterizer.prepare(gid, options);
-            if (!glyph) return glyph.error();
+            const bezel::Vec2 offset{static_cast<double>(kx) / h, static_cast<double>(ky) / v};
+            // A colour glyph's box comes from its paint, not its path: prepared anew.
+            if (prepared->box.color && (kx | ky) != 0) {
+                options.offset_px = offset;
+                prepared = rasterizer.prepare(gid, options);
+                if (!prepared) return prepared.error();
+            } else if ((kx | ky) != 0) {
+                move_pen(*prepared, bounds, offset);
+            }
+            const bezel::PreparedGlyph* glyph = &*prepared;
             const bezel::GlyphBox& box = glyph->box;
-            out.advance_px = static_cast<float>(box.advance_px);
             if (box.width <= 0 || box.height <= 0) continue;
             Phase& p = phases[count++];
             p.kx = kx;

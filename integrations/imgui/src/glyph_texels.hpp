@@ -33,7 +33,8 @@ struct GlyphTexels {
 // glyph h times with the pen at k/h px (k = 0..h−1) and pixel j of render k is window
 // m = h·j − k, so the renders interleave into the texel row (rows likewise with v). This is what
 // stb_truetype's oversampling approximates (a box prefilter of h columns rendered at h× width),
-// computed from exact areas with one rounding to 8 bits. ImGui samples a texel at its centre, so
+// computed from exact areas with one rounding to 8 bits. The outline is loaded once (prepare)
+// and filled h·v times (draw), each time with the pen and the tight box moved. ImGui samples a texel at its centre, so
 // the quad starts half a window minus half a texel left of window m_min:
 //   x0 = m_min/h + (h − 1)/(2h),   x1 = x0 + width/h      (stb's xoff: x0/h − (h − 1)/(2h)
 //                                                          for its box left x0 = m_min + h − 1)
