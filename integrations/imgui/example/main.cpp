@@ -3,6 +3,7 @@
 // drawn by bezel into the atlas.
 //
 //   bezel_imgui_example [--frames N --screenshot FILE.png] [--cjk-font FILE]
+//                       [--hinting none|light|full|auto]      (default full, as imgui_freetype)
 //
 // Interactive by default (close the window to quit). With --frames, renders N frames, saves the
 // last one (SDL_RenderReadPixels) to FILE.png, prints each text item's rectangle
@@ -36,11 +37,14 @@ struct Args {
     int frames = 0;   // 0: interactive
     std::string screenshot;
     std::string cjk_font;
+    unsigned flags = 0;   // bezel_imgui::BuilderFlags
 };
 
 int usage(const std::string& why) {
-    std::fprintf(stderr, "bezel_imgui_example: %s\nusage: bezel_imgui_example [--frames N "
-                 "--screenshot FILE.png] [--cjk-font FILE]\n", why.c_str());
+    std::fprintf(stderr,
+                 "bezel_imgui_example: %s\nusage: bezel_imgui_example [--frames N --screenshot "
+                 "FILE.png] [--cjk-font FILE] [--hinting none|light|full|auto]\n",
+                 why.c_str());
     return 2;
 }
 
@@ -67,8 +71,9 @@ struct Fonts {
 };
 
 // Adds the fonts, builds the atlas with bezel and draws the icons into it.
-bool build_fonts(ImFontAtlas& atlas, const std::string& cjk_font, Fonts& fonts,
+bool build_fonts(ImFontAtlas& atlas, const Args& args, Fonts& fonts,
                  ImVector<ImWchar>& cjk_ranges) {
+    const std::string& cjk_font = args.cjk_font;
     const std::string latin = std::string(BEZEL_FONTS_DIR) + "/dejavu-sans/DejaVuSans.ttf";
     fonts.small = atlas.AddFontFromFileTTF(latin.c_str(), 13.0f);
     fonts.body = atlas.AddFontFromFileTTF(latin.c_str(), 16.0f);
@@ -97,6 +102,7 @@ bool build_fonts(ImFontAtlas& atlas, const std::string& cjk_font, Fonts& fonts,
         }
         fonts.icons.push_back(std::move(*icon));
     }
+    atlas.FontBuilderFlags = args.flags;
     atlas.FontBuilderIO = bezel_imgui::builder();
     if (!atlas.Build()) {
         std::fprintf(stderr, "bezel_imgui_example: font atlas: %s\n",
@@ -182,6 +188,15 @@ bool parse_args(int argc, char** argv, Args& args, std::string& why) {
             args.screenshot = v;
         } else if (a == "--cjk-font") {
             args.cjk_font = v;
+        } else if (a == "--hinting") {
+            if (v == "none") args.flags = bezel_imgui::NoHinting;
+            else if (v == "light") args.flags = bezel_imgui::LightHinting;
+            else if (v == "full") args.flags = 0;
+            else if (v == "auto") args.flags = bezel_imgui::ForceAutoHint;
+            else {
+                why = "--hinting: '" + v + "' is not none, light, full or auto";
+                return false;
+            }
         } else {
             why = "unknown option '" + a + "'";
             return false;
@@ -223,7 +238,7 @@ int main(int argc, char** argv) {
     Fonts fonts;
     ImVector<ImWchar> cjk_ranges;   // must outlive the atlas build
     int status = 0;
-    if (!build_fonts(*io.Fonts, args.cjk_font, fonts, cjk_ranges)) {
+    if (!build_fonts(*io.Fonts, args, fonts, cjk_ranges)) {
         status = 1;
     } else {
         ImGui_ImplSDL2_InitForSDLRenderer(window);
