@@ -102,6 +102,20 @@ TEST(BezelImGuiAtlas, HoldsEveryRequestedGlyphOfMergedFonts) {
     EXPECT_NEAR(font->FindGlyph('A')->AdvanceX, a_metrics->advance_px, 1e-3);
 }
 
+// ImGui's own default font (ProggyClean, compressed inside ImGui), which Build() adds when no
+// font is configured.
+TEST(BezelImGuiAtlas, BuildsImGuisDefaultFont) {
+    ImFontAtlas atlas;
+    atlas.FontBuilderIO = bezel_imgui::builder();
+    ASSERT_TRUE(atlas.Build()) << bezel_imgui::last_build_error();
+    ASSERT_EQ(atlas.Fonts.Size, 1);
+    for (unsigned cp = 0x21; cp <= 0x7E; ++cp) {
+        const ImFontGlyph* g = atlas.Fonts[0]->FindGlyphNoFallback(static_cast<ImWchar>(cp));
+        ASSERT_NE(g, nullptr) << "U+" << std::hex << cp;
+        EXPECT_TRUE(g->Visible) << "U+" << std::hex << cp;
+    }
+}
+
 // --- metrics against ImGui's stb_truetype builder ----------------------------------------------
 
 struct BuiltFont {
