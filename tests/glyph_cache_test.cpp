@@ -41,7 +41,7 @@ TEST(GlyphCache, RepeatedStringMissesOncePerGlyphAndBin) {
             double frac = pen - static_cast<int>(pen);
             o.offset_px.x = frac;
             distinct.insert({f.gid(c), static_cast<int>(frac * kSubpixelBins)});
-            ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(c), o));
+            ASSERT_TRUE(cache.get(f.rasterizer, f.gid(c), o));
             pen += 7.3;
         }
     }
@@ -50,13 +50,16 @@ TEST(GlyphCache, RepeatedStringMissesOncePerGlyphAndBin) {
     EXPECT_EQ(s.hits, 3 * text.size() - distinct.size());
     EXPECT_EQ(s.entries, distinct.size());
     EXPECT_EQ(s.evictions, 0u);
-    // The font id, size and mode are part of the key.
+    // The font instance, size and mode are part of the key: another Font of the same file is
+    // another instance (its own instance_id).
     o.offset_px.x = 0;
-    ASSERT_TRUE(cache.get(f.rasterizer, 2, f.gid(U'h'), o));
+    Font other = std::move(Font::open(kDejaVu).value());
+    GlyphRasterizer other_rasterizer(other);
+    ASSERT_TRUE(cache.get(other_rasterizer, f.gid(U'h'), o));
     o.size_px = 17;
-    ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(U'h'), o));
+    ASSERT_TRUE(cache.get(f.rasterizer, f.gid(U'h'), o));
     o.fill.format = CoverageFormat::Lcd;
-    ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(U'h'), o));
+    ASSERT_TRUE(cache.get(f.rasterizer, f.gid(U'h'), o));
     EXPECT_EQ(cache.stats().misses, distinct.size() + 3);
 }
 
@@ -79,7 +82,7 @@ TEST(GlyphCache, HintingSlantBoxModeFlatteningAndLcdSettingsAreInTheKey) {
     variants[6].fill.lcd_filter = {{0, 0, 0xFF, 0, 0}};   // no filtering (sum 255)
     variants[7].slant = 0.2;
     for (std::size_t i = 0; i < variants.size(); ++i) {
-        auto cached = cache.get(f.rasterizer, 1, g, variants[i]);
+        auto cached = cache.get(f.rasterizer, g, variants[i]);
         ASSERT_TRUE(cached) << cached.error().message;
         EXPECT_EQ(cache.stats().misses, i + 1);
         auto box = f.rasterizer.measure(g, variants[i]);
@@ -91,7 +94,7 @@ TEST(GlyphCache, HintingSlantBoxModeFlatteningAndLcdSettingsAreInTheKey) {
         EXPECT_EQ((**cached).box.top, box->top) << i;
         EXPECT_EQ(to_mask((**cached).mask), direct) << i;
     }
-    for (const GlyphRenderOptions& v : variants) ASSERT_TRUE(cache.get(f.rasterizer, 1, g, v));
+    for (const GlyphRenderOptions& v : variants) ASSERT_TRUE(cache.get(f.rasterizer, g, v));
     EXPECT_EQ(cache.stats().misses, variants.size());
 }
 
@@ -101,7 +104,7 @@ TEST(GlyphCache, SubpixelOffsetsShareFourBins) {
     GlyphRenderOptions o;
     for (double sx : {0.0, 0.1, 0.24, 0.25, 0.49, 0.5, 0.74, 0.75, 0.99}) {
         o.offset_px.x = sx;
-        ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(U'x'), o));
+        ASSERT_TRUE(cache.get(f.rasterizer, f.gid(U'x'), o));
     }
     EXPECT_EQ(cache.stats().misses, 4u);
     EXPECT_EQ(cache.stats().hits, 5u);
@@ -116,7 +119,7 @@ TEST(GlyphCache, BitmapEqualsADirectRenderAtTheBinOffset) {
         o.fill.format = format;
         o.fill.lcd_order = LcdOrder::Bgr;
         o.offset_px.x = 0.6;   // bin 2: rendered at +0.5
-        auto cached = cache.get(f.rasterizer, 1, f.gid(U'&'), o);
+        auto cached = cache.get(f.rasterizer, f.gid(U'&'), o);
         ASSERT_TRUE(cached) << cached.error().message;
         o.offset_px.x = 0.5;
         auto box = f.rasterizer.measure(f.gid(U'&'), o);
@@ -141,11 +144,11 @@ TEST(GlyphCache, EvictsTheLeastRecentlyUsed) {
     std::size_t one = 0;
     {
         GlyphCache probe;
-        ASSERT_TRUE(probe.get(f.rasterizer, 1, f.gid(U'o'), o));
+        ASSERT_TRUE(probe.get(f.rasterizer, f.gid(U'o'), o));
         one = probe.stats().bytes;
     }
     GlyphCache cache(2 * one + one / 2);
-    auto get = [&](char32_t c) { ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(c), o)); };
+    auto get = [&](char32_t c) { ASSERT_TRUE(cache.get(f.rasterizer, f.gid(c), o)); };
     get(U'o');
     get(U'n');
     get(U'o');   // 'o' is now the most recent
@@ -167,7 +170,7 @@ TEST(GlyphCache, StaysWithinItsBoundAcrossManySizes) {
     for (double size = 6; size <= 120; size += 3) {
         o.size_px = size;
         for (char32_t c = U'a'; c <= U'z'; ++c) {
-            auto g = cache.get(f.rasterizer, 1, f.gid(c), o);
+            auto g = cache.get(f.rasterizer, f.gid(c), o);
             ASSERT_TRUE(g) << g.error().message;
             ASSERT_GT((*g)->box.width, 0);
             peak = std::max(peak, cache.stats().bytes);
@@ -186,7 +189,7 @@ TEST(GlyphCache, GlyphLargerThanTheBoundIsRenderedButNotKept) {
     GlyphCache cache(1000);
     GlyphRenderOptions o;
     o.size_px = 100;
-    auto g = cache.get(f.rasterizer, 1, f.gid(U'W'), o);
+    auto g = cache.get(f.rasterizer, f.gid(U'W'), o);
     ASSERT_TRUE(g);
     EXPECT_GT(static_cast<std::size_t>((*g)->mask.width * (*g)->mask.height), cache.max_bytes());
     EXPECT_EQ(cache.stats().entries, 0u);
@@ -197,7 +200,7 @@ TEST(GlyphCache, ErrorsPassThroughAndCacheNothing) {
     Fixture f;
     GlyphCache cache;
     GlyphRenderOptions o;
-    auto g = cache.get(f.rasterizer, 1, static_cast<GlyphId>(f.font.glyph_count() + 5), o);
+    auto g = cache.get(f.rasterizer, static_cast<GlyphId>(f.font.glyph_count() + 5), o);
     ASSERT_FALSE(g);
     EXPECT_NE(g.error().message.find(std::to_string(f.font.glyph_count() + 5)), std::string::npos);
     EXPECT_EQ(cache.stats().entries, 0u);
@@ -208,13 +211,13 @@ TEST(GlyphCache, HitsAllocateNothing) {
     GlyphCache cache;
     GlyphRenderOptions o;
     const std::u32string text = U"The quick brown fox jumps over the lazy dog";
-    for (char32_t c : text) ASSERT_TRUE(cache.get(f.rasterizer, 1, f.gid(c), o));
+    for (char32_t c : text) ASSERT_TRUE(cache.get(f.rasterizer, f.gid(c), o));
     std::vector<GlyphId> gids;
     for (char32_t c : text) gids.push_back(f.gid(c));
     long before = g_allocations.load();
     std::size_t found = 0;
     for (int pass = 0; pass < 5; ++pass)
-        for (GlyphId gid : gids) found += cache.get(f.rasterizer, 1, gid, o).ok();
+        for (GlyphId gid : gids) found += cache.get(f.rasterizer, gid, o).ok();
     EXPECT_EQ(g_allocations.load() - before, 0);
     EXPECT_EQ(found, 5 * gids.size());
 }
@@ -232,7 +235,7 @@ TEST(GlyphCache, ColourGlyphHitsAllocateNothing) {
         auto gid = font->glyph_for_char(c);
         ASSERT_TRUE(gid);
         gids.push_back(*gid);
-        auto got = cache.get(rasterizer, 1, *gid, o);
+        auto got = cache.get(rasterizer, *gid, o);
         ASSERT_TRUE(got) << got.error().message;
         ASSERT_TRUE((*got)->box.color);
         ASSERT_NE((*got)->rgba.data, nullptr);
@@ -240,7 +243,7 @@ TEST(GlyphCache, ColourGlyphHitsAllocateNothing) {
     long before = g_allocations.load();
     std::size_t found = 0;
     for (int pass = 0; pass < 5; ++pass)
-        for (GlyphId gid : gids) found += cache.get(rasterizer, 1, gid, o).ok();
+        for (GlyphId gid : gids) found += cache.get(rasterizer, gid, o).ok();
     EXPECT_EQ(g_allocations.load() - before, 0);
     EXPECT_EQ(found, 5 * gids.size());
     EXPECT_EQ(cache.stats().misses, gids.size());

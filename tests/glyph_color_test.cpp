@@ -210,24 +210,24 @@ TEST(GlyphColor, TheCacheKeysOnPaletteAndOnTheForegroundOnlyWhereItIsUsed) {
     GlyphRenderOptions o;
     o.size_px = 32;
     const GlyphId circles = gid_of(font, 0xF0E01), fg_glyph = gid_of(font, 0xF0B06);
-    ASSERT_TRUE(cache.get(r, 1, circles, o));
+    ASSERT_TRUE(cache.get(r, circles, o));
     o.color.palette.palette = 1;
-    ASSERT_TRUE(cache.get(r, 1, circles, o));
+    ASSERT_TRUE(cache.get(r, circles, o));
     EXPECT_EQ(cache.stats().misses, 2u);
     o.color.palette.palette = 0;
-    ASSERT_TRUE(cache.get(r, 1, circles, o));
+    ASSERT_TRUE(cache.get(r, circles, o));
     EXPECT_EQ(cache.stats().hits, 1u);
     // Another text colour: the palette-only glyph is a hit, the foreground glyph is repainted.
     o.color.foreground = {0, 0, 255, 255};
-    ASSERT_TRUE(cache.get(r, 1, circles, o));
+    ASSERT_TRUE(cache.get(r, circles, o));
     EXPECT_EQ(cache.stats().hits, 2u);
-    auto blue = cache.get(r, 1, fg_glyph, o);
+    auto blue = cache.get(r, fg_glyph, o);
     ASSERT_TRUE(blue);
     const std::vector<std::uint8_t> blue_px((*blue)->rgba.data,
                                             (*blue)->rgba.data + 4 * (*blue)->box.width *
                                                                      (*blue)->box.height);
     o.color.foreground = {255, 0, 0, 255};
-    auto red = cache.get(r, 1, fg_glyph, o);
+    auto red = cache.get(r, fg_glyph, o);
     ASSERT_TRUE(red);
     const std::vector<std::uint8_t> red_px((*red)->rgba.data,
                                            (*red)->rgba.data + 4 * (*red)->box.width *

@@ -282,21 +282,21 @@ TEST(SyntheticBold, CacheKeepsBoldAndRegularApart) {
     regular.size_px = 24;
     GlyphRenderOptions bold = regular;
     bold.bold = 0.05;
-    auto r = cache.get(rasterizer, 1, gid, regular);
+    auto r = cache.get(rasterizer, gid, regular);
     ASSERT_TRUE(r);
     const GlyphBox regular_box = (*r)->box;
     const std::vector<std::uint8_t> regular_pixels((*r)->mask.data,
                                                    (*r)->mask.data + (*r)->mask.height *
                                                                          (*r)->mask.stride);
-    auto b = cache.get(rasterizer, 1, gid, bold);
+    auto b = cache.get(rasterizer, gid, bold);
     ASSERT_TRUE(b);
     EXPECT_EQ(cache.stats().misses, 2u);
     EXPECT_EQ(cache.stats().entries, 2u);
     EXPECT_GT((*b)->box.width, regular_box.width);
     EXPECT_DOUBLE_EQ((*b)->box.advance_px, regular_box.advance_px + 1.2);
     // Each is found again, the regular one unchanged.
-    auto r2 = cache.get(rasterizer, 1, gid, regular);
-    auto b2 = cache.get(rasterizer, 1, gid, bold);
+    auto r2 = cache.get(rasterizer, gid, regular);
+    auto b2 = cache.get(rasterizer, gid, bold);
     ASSERT_TRUE(r2 && b2);
     EXPECT_EQ(cache.stats().hits, 2u);
     EXPECT_EQ((*r2)->box.width, regular_box.width);

@@ -73,7 +73,7 @@ double hits(bezel::GlyphCache& cache, bezel::GlyphRasterizer& r,
     const auto t0 = Clock::now();
     for (int k = 0; k < reps; ++k)
         for (bezel::GlyphId gid : gids) {
-            auto c = cache.get(r, 1, gid, o);
+            auto c = cache.get(r, gid, o);
             if (!c) check(c.error());
             sink += static_cast<std::size_t>((*c)->box.width);
         }
@@ -115,9 +115,9 @@ int main(int argc, char** argv) {
 
         bezel::GlyphCache ce, cl;
         for (bezel::GlyphId gid : colr)
-            if (auto got = ce.get(re, 1, gid, o); !got) check(got.error());
+            if (auto got = ce.get(re, gid, o); !got) check(got.error());
         for (bezel::GlyphId gid : outline)
-            if (auto got = cl.get(rl, 1, gid, ol); !got) check(got.error());
+            if (auto got = cl.get(rl, gid, ol); !got) check(got.error());
         const int hit_reps = 2000;
         std::vector<double> t_colr, t_cbdt, t_out, t_hit_colr, t_hit_out;
         for (int run = 0; run < runs; ++run) {

@@ -4,9 +4,11 @@
 // the pen position on the baseline (so an ascender is at negative y). Face-wide metrics are in
 // font units (`em_units`) as the font stores them, y UP (ascender > 0, descender < 0).
 //
-// Threading: a Font owns its own FreeType library instance. One Font must not be used from two
-// threads at once (FreeType faces are not thread-safe); separate Font objects, even of the same
-// file, may be used on separate threads freely.
+// Threading: a Font owns its own FreeType library instance and face. One Font must not be used
+// from two threads at once (FreeType faces are not thread-safe); separate Font objects, even of
+// the same file or FontFace, may be used on separate threads freely. The cheap way to give each
+// thread its own: one FontFace (bezel/font_face.hpp, the bytes read once), Font::open(face) per
+// thread.
 #pragma once
 
 #include <cstdint>
@@ -16,6 +18,7 @@
 #include <vector>
 
 #include "bezel/expected.hpp"
+#include "bezel/font_face.hpp"
 #include "bezel/geometry.hpp"
 #include "bezel/limits.hpp"
 #include "bezel/path.hpp"
@@ -27,13 +30,26 @@ using GlyphId = std::uint32_t;
 namespace font_detail {
 struct Access;
 }  // namespace font_detail
+class GlyphRasterizer;
 
-// Face-wide metrics in font units, y up.
+// Face-wide metrics in FONT UNITS (units_per_em to the em), y UP, as the font stores them.
+// Font::metrics_px gives them in pixels at a size.
 struct FontMetrics {
     int units_per_em = 0;
     double ascender = 0;   // typographic ascender (hhea, or OS/2 if hhea is empty), > 0
     double descender = 0;  // < 0
     double line_gap = 0;   // extra leading; line height = ascender − descender + line_gap
+};
+
+// Face-wide metrics in PIXELS at a size, as DISTANCES from the baseline (no sign convention to
+// get wrong): in bezel's y-down pixels the ascender line is at y = −ascent_px and the descender
+// line at y = +descent_px. Unhinted: FontMetrics scaled by size_px / units_per_em.
+struct FontMetricsPx {
+    double size_px = 0;
+    double ascent_px = 0;       // above the baseline (FontMetrics::ascender scaled), > 0 for a usual font
+    double descent_px = 0;      // below the baseline (−FontMetrics::descender scaled), > 0 for a usual font
+    double line_gap_px = 0;     // extra leading between lines
+    double line_height_px = 0;  // baseline to baseline: ascent_px + descent_px + line_gap_px
 };
 
 // One variation axis of a variable font. Values in the axis's user units (e.g. wght 100..900).
@@ -52,7 +68,7 @@ struct VariationSetting {
 // used at (empty: the font's defaults). What a font list (bezel/font_collection.hpp) holds and
 // what a system font lookup (fontconfig) returns.
 struct FontSource {
-    std::string file;
+    std::string file;   // for a font from memory (FontCollection::add(FontFace)), the face's name
     int face_index = 0;
     std::vector<VariationSetting> variations;
 };
@@ -84,7 +100,10 @@ constexpr bool hints_horizontally(Hinting hinting) {
 }
 
 struct OutlineOptions {
-    double size_px = 0;                // the em size in pixels (> 0 and ≤ kMaxFontSizePx)
+    // The em size in pixels, (0, kMaxFontSizePx]. 16 by default, as GlyphRenderOptions and
+    // ShapeOptions: one default text size for every options struct, so that default-made options
+    // of a glyph's outline, its bitmap and its shaping describe the same glyph.
+    double size_px = 16;
     Hinting hinting = Hinting::None;
 };
 // Unhinted: FreeType loads the outline in font units (FT_LOAD_NO_SCALE) and bezel scales it by
@@ -125,16 +144,33 @@ public:
     // the problem: no such file, a directory, face index out of range (0..face count − 1), or
     // FreeType's reason ("FreeType error 0x02 (unknown file format)"). FreeType reads tables
     // lazily, so a damaged file may open and fail later, per glyph, with an error from outline().
+    // Built on FontFace::open(file, face_index) then open(face), with its messages.
     static Expected<Font> open(const std::string& file, int face_index = 0);
+    // A new instance of a face read once (bezel/font_face.hpp): its own FreeType library and
+    // face over the face's shared bytes (no copy, no second read), at the font's default
+    // variation coordinates. What each thread of a program calls for its own Font of one face.
+    // Errors name the face (FreeType cannot start, or fails on bytes it accepted before).
+    static Expected<Font> open(const FontFace& face);
 
-    // A moved-from Font may only be destroyed or assigned to.
+    // A moved-from Font may only be destroyed or assigned to. A GlyphRasterizer made from a Font
+    // shares its face (glyph.hpp), so moving or destroying the Font leaves the rasterizer valid.
     Font(Font&&) noexcept;
     Font& operator=(Font&&) noexcept;
     Font(const Font&) = delete;
     Font& operator=(const Font&) = delete;
     ~Font();
 
+    // The file the font was read from, or a memory font's FontMemoryOptions::name: what every
+    // message about the font starts with.
     const std::string& file() const;
+    // The shared face this Font is an instance of (a copy of the FontFace it was opened from).
+    const FontFace& face() const;
+    // Identifies the glyphs this Font draws: its face and its current variation coordinates.
+    // It changes with set_variations (and returns to an earlier value when the coordinates
+    // return to one of the last few set), is never given to another Font, and is what
+    // GlyphCache keys glyphs on (glyph.hpp). Two Fonts of one face at equal coordinates have
+    // different ids (their glyphs are equal, but the cache does not rely on it).
+    std::uint64_t instance_id() const;
     std::string family_name() const;
     std::string style_name() const;
     int face_index() const;
@@ -155,6 +191,9 @@ public:
     // For a bitmap-only sfnt, units per em, ascender, descender and line gap come from its head
     // and hhea tables (FreeType reports them as 0 for faces without outlines).
     FontMetrics metrics() const;
+    // metrics() in pixels at `size_px` (FontMetricsPx: distances from the baseline). Errors name
+    // the font: a size outside (0, kMaxFontSizePx], a face without units per em.
+    Expected<FontMetricsPx> metrics_px(double size_px) const;
 
     // Glyph for a Unicode code point; std::nullopt when the font maps it to nothing (.notdef).
     std::optional<GlyphId> glyph_for_char(char32_t code_point) const;
@@ -163,7 +202,7 @@ public:
 
     std::vector<VariationAxis> axes() const;   // empty for a non-variable font
     // Sets design coordinates; unnamed axes stay at their defaults. Errors name an unknown tag or
-    // an out-of-range value.
+    // an out-of-range value. Changes instance_id() when the coordinates change.
     Status set_variations(const std::vector<VariationSetting>& settings);
 
     // Metrics of `gid` at a size; errors name the glyph id when it is out of range.
@@ -189,10 +228,13 @@ private:
     // The font module's other files (render_with_freetype in bezel/freetype_reference.hpp) reach Impl
     // through font_detail::Access.
     friend struct font_detail::Access;
-    explicit Font(std::unique_ptr<Impl> impl);
+    // A GlyphRasterizer keeps a share of the Impl (so it cannot dangle when the Font moves).
+    friend class GlyphRasterizer;
+    explicit Font(std::shared_ptr<Impl> impl);
     // outline() and glyph_metrics() share it; `want_path` false skips building the Path.
     Expected<GlyphOutline> load_glyph(GlyphId gid, const OutlineOptions& options, bool want_path);
-    std::unique_ptr<Impl> impl_;
+    // Shared only with the GlyphRasterizers made from this Font (one face, one thread at a time).
+    std::shared_ptr<Impl> impl_;
 };
 
 }  // namespace bezel

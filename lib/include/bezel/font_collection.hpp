@@ -52,8 +52,8 @@ std::shared_ptr<FallbackSource> system_fallback(std::string pattern,
 
 class FontCollection {
 public:
-    // Opens each source's face once (a Font for outlines and metrics, a Shaper for HarfBuzz) and
-    // sets its variations. Errors name the file and the reason: missing, not a font, face index
+    // Opens each source's face once (FontFace::open: the file read once), makes a Font
+    // (outlines, metrics) and a Shaper (HarfBuzz) of that one face, and sets its variations. Errors name the file and the reason: missing, not a font, face index
     // out of range, an unknown variation axis; an empty list; more than kMaxCollectionFonts.
     static Expected<FontCollection> open(const std::vector<FontSource>& sources);
     FontCollection(FontCollection&&) noexcept;
@@ -64,6 +64,11 @@ public:
 
     // Appends a font (its index is size() − 1). Errors as open().
     Expected<std::size_t> add(const FontSource& source, FontOrigin origin = FontOrigin::Listed);
+    // Appends a face read already (a font from memory, or one shared with other collections and
+    // threads: its Font and Shaper are new instances of it), at `variations`. Its source(i) is
+    // {face.name(), face.face_index(), variations}. Errors as open().
+    Expected<std::size_t> add(const FontFace& face,
+                              const std::vector<VariationSetting>& variations = {});
 
     std::size_t size() const;
     // Fonts keep their index and their address for the life of the collection (a
@@ -117,6 +122,8 @@ public:
 private:
     struct Impl;
     explicit FontCollection(std::unique_ptr<Impl> impl);
+    Expected<std::size_t> add_face(const FontFace& face, const FontSource& source,
+                                   FontOrigin origin);
     std::unique_ptr<Impl> impl_;
 };
 

@@ -4,8 +4,8 @@
 // Units: pixels, y DOWN. A bitmap's `left`/`top` follow FreeType's bitmap_left / bitmap_top (top =
 // rows ABOVE the baseline, so the bitmap's first row is at pen.y − top).
 //
-// Threading: a GlyphRasterizer or GlyphCache holds scratch memory (and the rasterizer borrows a
-// Font); one object must not be used from two threads at once. Steady state allocates nothing per
+// Threading: a GlyphRasterizer or GlyphCache holds scratch memory (and the rasterizer shares a
+// Font's FreeType face); one object must not be used from two threads at once. Steady state allocates nothing per
 // glyph: cache hits reuse their buffers and the cache is bounded (a miss, like every prepare(),
 // allocates the outline it loads).
 #pragma once
@@ -129,12 +129,21 @@ struct PreparedGlyph {
     std::shared_ptr<const ColorBitmap> bitmap;
 };
 
-// Rasterizes single glyphs of one Font (borrowed: it must outlive this object) into caller
-// buffers with a stride. What a toolkit calls to fill its own atlas; the one glyph path of bezel
-// (GlyphCache, TextRenderer and the bezel CLI render glyphs through it).
+// Rasterizes single glyphs of one Font into caller buffers with a stride. What a toolkit calls
+// to fill its own atlas; the one glyph path of bezel (GlyphCache, TextRenderer and the bezel CLI
+// render glyphs through it).
 class GlyphRasterizer {
 public:
+    // Shares `font`'s FreeType face (shared ownership, not a borrow): the Font may be moved or
+    // destroyed afterwards and the rasterizer keeps drawing its glyphs. Sharing means: variations
+    // set on the Font (or on whatever Font it was moved into) are the rasterizer's too, and the
+    // Font and its rasterizers are one object for threading (one thread at a time). A thread
+    // of its own takes its own Font::open(face) and a rasterizer of that. `font` must not be a
+    // moved-from Font.
     explicit GlyphRasterizer(Font& font);
+    // The Font's instance_id() (font.hpp): its face and current variation coordinates, what
+    // GlyphCache keys this rasterizer's glyphs on.
+    std::uint64_t instance_id() const { return font_.instance_id(); }
 
     // Loads the outline of `gid` (one Font::outline call) and computes its box by
     // `options.box`, plus kLcdPaddingPx display pixels on each side in LCD modes. Errors name the
@@ -170,7 +179,7 @@ private:
     Expected<PreparedGlyph> prepare_color(GlyphId gid, ColorFormat format,
                                           const GlyphRenderOptions& options);
     Status draw_color_alpha(const PreparedGlyph& glyph, const MaskView& target);
-    Font* font_;
+    Font font_;   // shares the Impl of the Font it was made from
     Rasterizer raster_;
     std::unique_ptr<Painter> painter_;            // made on the first colour glyph
     std::vector<std::uint8_t> rgba_scratch_;      // draw() of a colour glyph
@@ -191,14 +200,32 @@ struct GlyphCacheStats {
     std::size_t bytes = 0, entries = 0;
 };
 
-// Glyph bitmaps keyed by (font id, glyph id, subpixel bins and every option that changes the
-// pixels: size, hinting, slant, bold, box mode, every FillOptions field but the origin, and the
-// colour options: enabled, palette, custom entries, bitmap filter; the foreground only for a
-// colour glyph whose paint uses it, so text colours share mask glyphs),
-// rendered once and blended many times. The pen offset is quantized to kSubpixelBins bins per
-// axis. Memory is bounded by max_bytes (least recently used entries are evicted).
-// A pointer from get() stays valid until the next get() or clear().
+// Subpixel pen positions the cache renders per axis: a pen offset v in [0, 1) falls in bin
+// b = floor(v · kSubpixelBins) and is drawn at b / kSubpixelBins (so at most 1/4 px early). A
+// toolkit that rounds its pen to the nearest quarter first (as TextRenderer does) has an exact
+// bin and a placement error of at most 1/8 px.
 inline constexpr int kSubpixelBins = 4;
+
+// Glyph bitmaps, rendered once and blended many times, keyed by what the pixels depend on:
+//   the face the rasterizer really draws: its Font's instance_id() (font.hpp), which names the
+//     face and its variation coordinates, so two rasterizers of different fonts or of different
+//     instances of one variable font never share an entry, and a rasterizer whose Font changes
+//     its variations finds its glyphs of the new instance (and, when it returns to one of the
+//     last few, those of the old);
+//   the glyph id and the pen's subpixel bin on each axis (kSubpixelBins);
+//   every option that changes the pixels: size, hinting, slant, bold, box mode, every FillOptions
+//     field but the origin, the colour options (enabled, palette, custom entries, bitmap filter;
+//     the foreground only for a colour glyph whose paint uses it, so text colours share mask
+//     glyphs).
+// Memory is bounded by max_bytes (least recently used entries are evicted), except while a
+// batch pins the glyphs it returned (begin_batch).
+//
+// Handle lifetime: a CachedGlyph* from get() and the pixels it points to stay valid until that
+// entry is evicted or the cache is cleared or destroyed. Only a get() that misses evicts,
+// and it evicts the least recently used entries first (never the entry it returns). A glyph
+// larger than max_bytes on its own is rendered but not kept: outside a batch it is valid until
+// the next get(). Inside a batch (begin_batch .. end_batch) NOTHING the batch returned is
+// evicted or overwritten: a frame looks up all its glyphs, then blits them all.
 class GlyphCache {
 public:
     explicit GlyphCache(std::size_t max_bytes = kDefaultGlyphCacheBytes);
@@ -208,11 +235,25 @@ public:
     GlyphCache& operator=(const GlyphCache&) = delete;
     ~GlyphCache();
 
-    // `font_id` distinguishes fonts (and variation instances) the caller renders with. Each
-    // component of `options.offset_px` is quantized to a bin of [0, 1) before lookup and
-    // rendering (a value outside [0, 1), or NaN, counts as bin 0). A miss loads the outline once.
-    Expected<const CachedGlyph*> get(GlyphRasterizer& rasterizer, std::uint64_t font_id,
-                                     GlyphId gid, const GlyphRenderOptions& options);
+    // The glyph `gid` of `rasterizer`'s font drawn with `options`. Each component of
+    // `options.offset_px` must be in [0, 1) (the fractional part of the pen; the caller adds the
+    // whole part to the box): it is quantized to its bin (kSubpixelBins) before lookup and
+    // rendering. An offset outside [0, 1), or not a number, is an Error naming the glyph and the
+    // value (GlyphRasterizer accepts any offset; the cache's bins cover only a pixel). A miss loads
+    // the outline once. A warm hit allocates nothing. Errors as GlyphRasterizer::prepare and draw.
+    Expected<const CachedGlyph*> get(GlyphRasterizer& rasterizer, GlyphId gid,
+                                     const GlyphRenderOptions& options);
+
+    // A frame's batch: from begin_batch() to end_batch() every glyph get() returns is pinned, so
+    // all of them stay valid together until end_batch() (see "Handle lifetime" above). Pinned
+    // entries are never evicted; when they alone fill max_bytes the cache grows past it for the
+    // batch (a frame's glyphs must all exist at once) and the next miss after end_batch() evicts
+    // it back under the bound. Batches do not nest: begin_batch() inside a batch is an Error.
+    // clear() ends a batch.
+    Status begin_batch();
+    void end_batch();
+    bool in_batch() const;
+
     void clear();
     GlyphCacheStats stats() const;
     std::size_t max_bytes() const;

@@ -53,6 +53,10 @@ inline constexpr int kMaxCubicsPerArc = 512;
 // --- font -------------------------------------------------------------------------------------
 // Largest em size accepted, in pixels: beyond it FreeType's 26.6 fixed point overflows.
 inline constexpr double kMaxFontSizePx = 16384.0;
+// Largest font, in bytes, a FontFace takes (a file, or bytes from memory): 1 GiB, far past any
+// real font (colour emoji and CJK collections are tens of MiB), and inside the 32-bit lengths of
+// HarfBuzz's blobs and sfnt table offsets.
+inline constexpr std::size_t kMaxFontBytes = std::size_t{1} << 30;
 // Largest face index accepted: FreeType keeps the face in the low 16 bits of its index (the
 // high bits select a named instance of a variable font, which bezel does through variations).
 inline constexpr int kMaxFaceIndex = 0xFFFF;

@@ -4,7 +4,8 @@
 // byte offsets into the UTF-8 input.
 //
 // Threading: a Shaper holds a HarfBuzz font and a reused buffer; one Shaper must not be used from
-// two threads at once. Separate Shapers, even of the same file, may run on separate threads.
+// two threads at once. Separate Shapers, even of the same file or FontFace, may run on separate
+// threads (Shapers of one FontFace share its immutable HarfBuzz face).
 #pragma once
 
 #include <cstddef>
@@ -16,6 +17,7 @@
 
 #include "bezel/expected.hpp"
 #include "bezel/font.hpp"
+#include "bezel/font_face.hpp"
 #include "bezel/limits.hpp"
 
 namespace bezel {
@@ -84,12 +86,17 @@ struct FontExtents {
     double ascender_px = 0, descender_px = 0, line_gap_px = 0;
 };
 
-// HarfBuzz shaping of one font file (its own hb_face from the file; glyph ids are the same as
-// Font's for the same file and face index).
+// HarfBuzz shaping of one face (glyph ids are the same as Font's for the same face).
 class Shaper {
 public:
-    // Errors name the file: missing, not a font, face index out of range.
+    // Built on FontFace::open(file, face_index) then open(face). Errors name the file: missing,
+    // not a font, face index out of range.
     static Expected<Shaper> open(const std::string& file, int face_index = 0);
+    // A Shaper of a face read once (bezel/font_face.hpp): the HarfBuzz face is parsed once per
+    // FontFace and shared, read-only, by every Shaper of it on any thread; each Shaper has its
+    // own HarfBuzz font (size, variations) and buffer. Errors name the face: bytes HarfBuzz does
+    // not read as OpenType ("not an OpenType or TrueType font"), a face with no glyphs.
+    static Expected<Shaper> open(const FontFace& face);
     Shaper(Shaper&&) noexcept;
     Shaper& operator=(Shaper&&) noexcept;
     Shaper(const Shaper&) = delete;

@@ -7,10 +7,9 @@
 // 1/64 px, which is visible when an outline is magnified or compared across sizes.
 // Hinted outlines need the size set on the face, so they come from FreeType in 26.6 pixels.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <system_error>
 
 #include "bezel/font.hpp"
 #include "font/font_impl.hpp"
@@ -31,71 +30,48 @@ std::string font_detail::format_number(double v) {
     return buf;
 }
 
-namespace {
-
-// Checks the file before FreeType sees it: FreeType reports a missing file and a directory
-// alike as "cannot open resource".
-Status check_regular_file(const std::string& file) {
-    std::error_code ec;
-    const auto status = std::filesystem::status(file, ec);
-    if (status.type() == std::filesystem::file_type::not_found) {
-        return Error{file + ": no such file"};
-    }
-    if (ec) return Error{file + ": " + ec.message()};
-    if (status.type() == std::filesystem::file_type::directory) {
-        return Error{file + ": is a directory, not a font file"};
-    }
-    if (status.type() != std::filesystem::file_type::regular) {
-        return Error{file + ": not a regular file"};
-    }
-    return ok_status();
+std::uint64_t font_detail::next_instance_id() {
+    static std::atomic<std::uint64_t> counter{0};
+    return ++counter;
 }
 
-}  // namespace
-
-Font::Font(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Font::Font(std::shared_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Font::Font(Font&&) noexcept = default;
 Font& Font::operator=(Font&&) noexcept = default;
 Font::~Font() = default;
 
 Expected<Font> Font::open(const std::string& file, int face_index) {
-    if (face_index < 0 || face_index > kMaxFaceIndex) {
-        return Error{file + ": face index " + std::to_string(face_index) +
-                     " out of range (0.." + std::to_string(kMaxFaceIndex) + ")"};
-    }
-    if (Status s = check_regular_file(file); !s) return s.error();
+    auto face = FontFace::open(file, face_index);
+    if (!face) return face.error();
+    return open(*face);
+}
 
-    auto impl = std::make_unique<Impl>();
-    impl->file = file;
-    impl->face_index = face_index;
+Expected<Font> Font::open(const FontFace& source) {
+    auto impl = std::make_shared<Impl>(source);
+    impl->file = source.name();
+    impl->face_index = source.face_index();
+    impl->face_count = source.face_count();
+    impl->instance_id = font_detail::next_instance_id();
 
     FT_Library library = nullptr;
     if (FT_Error e = FT_Init_FreeType(&library)) {
-        return Error{file + ": cannot start FreeType: " + ft_error_text(e)};
+        return Error{impl->file + ": cannot start FreeType: " + ft_error_text(e)};
     }
     impl->library.reset(library);
-
-    // Face index −1 asks FreeType only whether it can read the file and how many faces it has,
-    // so an index past the end gets a message that says so.
-    FT_Face probe = nullptr;
-    if (FT_Error e = FT_New_Face(library, file.c_str(), -1, &probe)) {
-        return Error{file + ": " + ft_error_text(e)};
-    }
-    impl->face_count = static_cast<int>(probe->num_faces);
-    FT_Done_Face(probe);
-    if (face_index >= impl->face_count) {
-        return Error{file + ": face index " + std::to_string(face_index) +
-                     " out of range (the file has " + std::to_string(impl->face_count) +
-                     (impl->face_count == 1 ? " face)" : " faces)")};
-    }
-
+    // The bytes were checked by FontFace; FreeType reads them in place (they outlive the face:
+    // Impl holds the FontFace).
     FT_Face face = nullptr;
-    if (FT_Error e = FT_New_Face(library, file.c_str(), face_index, &face)) {
-        return Error{file + ": face " + std::to_string(face_index) + ": " + ft_error_text(e)};
+    if (FT_Error e = FT_New_Memory_Face(library, source.data(), static_cast<FT_Long>(source.size()),
+                                        source.face_index(), &face)) {
+        return Error{impl->file + ": face " + std::to_string(source.face_index()) + ": " +
+                     ft_error_text(e)};
     }
     impl->face.reset(face);
     return Font(std::move(impl));
 }
+
+const FontFace& Font::face() const { return impl_->source; }
+std::uint64_t Font::instance_id() const { return impl_->instance_id; }
 
 const std::string& Font::file() const { return impl_->file; }
 
@@ -147,6 +123,23 @@ FontMetrics Font::metrics() const {
         }
     }
     return m;
+}
+
+Expected<FontMetricsPx> Font::metrics_px(double size_px) const {
+    if (!(size_px > 0.0 && size_px <= kMaxFontSizePx)) {  // also rejects NaN
+        return Error{impl_->file + ": font size " + format_number(size_px) +
+                     " px out of range (0, " + format_number(kMaxFontSizePx) + "]"};
+    }
+    const FontMetrics m = metrics();
+    if (m.units_per_em <= 0) return Error{impl_->file + ": the font has no units per em"};
+    const double k = size_px / m.units_per_em;
+    FontMetricsPx px;
+    px.size_px = size_px;
+    px.ascent_px = m.ascender * k;
+    px.descent_px = -m.descender * k;
+    px.line_gap_px = m.line_gap * k;
+    px.line_height_px = px.ascent_px + px.descent_px + px.line_gap_px;
+    return px;
 }
 
 bool Font::has_color_bitmaps() const { return FT_HAS_COLOR(impl_->face.get()); }

@@ -11,6 +11,7 @@
 #include FT_FREETYPE_H
 
 #include "bezel/font.hpp"
+#include "bezel/font_face.hpp"
 #include "font/colr_table.hpp"
 
 namespace bezel {
@@ -41,6 +42,9 @@ struct FreeTypeRenderCache {
     int outline_flags = 0;
 };
 
+// A new id for Font::instance_id(), never given out before in this process.
+std::uint64_t next_instance_id();
+
 // A number in an error message ("%g": 6 significant digits, no trailing zeros).
 std::string format_number(double v);
 
@@ -53,12 +57,19 @@ Expected<std::vector<VariationSetting>> named_instance_coordinates(const std::st
 }  // namespace font_detail
 
 struct Font::Impl {
-    // Declaration order is destruction order reversed: the face goes before its library.
+    // Declaration order is destruction order reversed: the FreeType face goes before its library,
+    // and both before the FontFace that holds the bytes they read.
+    explicit Impl(FontFace f) : source(std::move(f)) {}
+    FontFace source;
     font_detail::LibraryPtr library;
     font_detail::FacePtr face;
     std::string file;
     int face_index = 0;
     int face_count = 0;
+    // Font::instance_id(): the id of the current variation coordinates, and the last few
+    // coordinates set with theirs, so that switching back to an instance finds its id again.
+    std::uint64_t instance_id = 0;
+    std::vector<std::pair<std::vector<FT_Fixed>, std::uint64_t>> recent_instances;
     // The 26.6 char size last set with FT_Set_Char_Size (hinted loads only), 0 when none, so a
     // run of glyphs at one size sets it once.
     FT_F26Dot6 char_size_26_6 = 0;

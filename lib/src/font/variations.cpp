@@ -2,6 +2,7 @@
 //
 // FreeType describes axes in FT_MM_Var (16.16 fixed-point values in the axes' user units, e.g.
 // wght 100..900) and takes design coordinates in the same units.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -101,6 +102,21 @@ Status Font::set_variations(const std::vector<VariationSetting>& settings) {
                                                    coords.data())) {
         return Error{file + ": cannot set variations: " + font_detail::ft_error_text(e)};
     }
+    // The instance id of these coordinates: the one they had when set lately, else a new one.
+    // The last kRecentInstances are remembered: a renderer switching between a few instances
+    // keeps hitting its glyph cache, and the list stays small whatever a caller animates.
+    constexpr std::size_t kRecentInstances = 8;
+    auto& recent = impl_->recent_instances;
+    auto found = std::find_if(recent.begin(), recent.end(),
+                              [&](const auto& r) { return r.first == coords; });
+    if (found != recent.end()) {
+        impl_->instance_id = found->second;
+        std::rotate(recent.begin(), found, found + 1);   // most recent first
+        return ok_status();
+    }
+    impl_->instance_id = font_detail::next_instance_id();
+    if (recent.size() == kRecentInstances) recent.pop_back();
+    recent.insert(recent.begin(), {std::move(coords), impl_->instance_id});
     return ok_status();
 }
 

@@ -1,5 +1,5 @@
-// FontCollection: fonts opened once per face, in list order, plus the ones a fallback source
-// adds.
+// FontCollection: fonts opened once per face (one FontFace for each font's Font and Shaper), in
+// list order, plus the ones a fallback source adds.
 #include "bezel/font_collection.hpp"
 #include "text/layout_fonts.hpp"
 
@@ -80,7 +80,24 @@ Expected<std::size_t> FontCollection::add(const FontSource& source, FontOrigin o
     if (impl_->entries.size() >= kMaxCollectionFonts)
         return Error{source.file + ": a font list holds at most " +
                      std::to_string(kMaxCollectionFonts) + " fonts"};
-    auto font = Font::open(source.file, source.face_index);
+    auto face = FontFace::open(source.file, source.face_index);
+    if (!face) return face.error();
+    return add_face(*face, source, origin);
+}
+
+Expected<std::size_t> FontCollection::add(const FontFace& face,
+                                          const std::vector<VariationSetting>& variations) {
+    const FontSource source{face.name(), face.face_index(), variations};
+    if (impl_->entries.size() >= kMaxCollectionFonts)
+        return Error{source.file + ": a font list holds at most " +
+                     std::to_string(kMaxCollectionFonts) + " fonts"};
+    return add_face(face, source, FontOrigin::Listed);
+}
+
+// One face for both the Font and the Shaper: the bytes are read once, and both see the same.
+Expected<std::size_t> FontCollection::add_face(const FontFace& face, const FontSource& source,
+                                               FontOrigin origin) {
+    auto font = Font::open(face);
     if (!font) return font.error();
     if (!source.variations.empty()) {
         if (auto set = font->set_variations(source.variations); !set) {
@@ -92,7 +109,7 @@ Expected<std::size_t> FontCollection::add(const FontSource& source, FontOrigin o
     if (origin == FontOrigin::System && impl_->outlines_only) {
         if (Status s = font->require_outlines(); !s) return s.error();
     }
-    auto shaper = Shaper::open(source.file, source.face_index);
+    auto shaper = Shaper::open(face);
     if (!shaper) return shaper.error();
     const FontMetrics metrics = font->metrics();
     const bool colour = font->has_color_bitmaps();

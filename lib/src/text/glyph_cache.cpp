@@ -4,7 +4,15 @@
 // Memory. `bytes` counts each entry's pixel capacity plus kEntryOverheadBytes (so blank glyphs,
 // which have no pixels, still count and the number of entries is bounded too); inserting evicts
 // from the LRU end until the new entry fits under max_bytes. A glyph larger than max_bytes on its
-// own is not cached: it is rendered into a scratch bitmap that the next get() reuses.
+// own is not cached: it is rendered into an "unkept" scratch bitmap that the next get() reuses
+// (outside a batch) or that lives until end_batch() (inside one).
+//
+// Handles. Slots live in a deque, which never moves an element when it grows, so a CachedGlyph*
+// (and its slot's pixels) stays put until the slot is evicted or dropped. A batch pins what it
+// returns: each pinned slot carries the batch's number, and since every hit and insert moves its
+// slot to the head of the LRU list, the pinned slots are a prefix of the list from the head. So
+// the tail is unpinned unless every slot is pinned, and eviction from the tail stops at the
+// first pinned slot: then the cache grows past max_bytes for the rest of the batch.
 //
 // No allocation once warm: hits touch only the table and the list; a miss that evicts reuses the
 // last evicted slot's pixel buffer (glyphs of one size are of similar sizes), slots are recycled
@@ -12,7 +20,9 @@
 #include <array>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -26,7 +36,7 @@ constexpr std::size_t kEntryOverheadBytes = 64;
 constexpr std::int32_t kNone = -1;
 
 struct Key {
-    std::uint64_t font_id;
+    std::uint64_t instance_id;   // the rasterizer's Font::instance_id(): face and variations
     std::uint64_t size_bits;       // the double's bit pattern: sizes compare exactly
     std::uint64_t tolerance_bits;
     std::uint64_t flatness_bits;   // ClassicFlatness's ε (the tolerance's counterpart there)
@@ -41,7 +51,7 @@ struct Key {
     std::uint64_t custom_palette;   // a hash of the custom entries (0: none)
 
     bool operator==(const Key& o) const {
-        return font_id == o.font_id && size_bits == o.size_bits &&
+        return instance_id == o.instance_id && size_bits == o.size_bits &&
                tolerance_bits == o.tolerance_bits && flatness_bits == o.flatness_bits &&
                slant_bits == o.slant_bits && bold_bits == o.bold_bits &&
                gid == o.gid && bin_x == o.bin_x && bin_y == o.bin_y && coverage == o.coverage &&
@@ -67,7 +77,7 @@ std::uint64_t mix(std::uint64_t x) {
 }
 
 std::uint64_t hash_key(const Key& k) {
-    std::uint64_t h = mix(k.font_id ^ 0x9e3779b97f4a7c15ULL);
+    std::uint64_t h = mix(k.instance_id ^ 0x9e3779b97f4a7c15ULL);
     h = mix(h ^ k.size_bits);
     h = mix(h ^ k.tolerance_bits);
     h = mix(h ^ k.flatness_bits);
@@ -101,10 +111,18 @@ std::uint32_t rgba_bits(Rgba8 c) {
     return std::uint32_t{c.r} << 24 | std::uint32_t{c.g} << 16 | std::uint32_t{c.b} << 8 | c.a;
 }
 
-// floor(v · bins) for v in [0, 1); anything else (NaN, out of range) → bin 0.
+// floor(v · bins) for v in [0, 1) (the caller checked the range). The min guards the one float
+// case where v · bins rounds up to bins (v just below 1).
 std::uint8_t bin_of(double v) {
-    if (!(v >= 0.0 && v < 1.0)) return 0;
     return static_cast<std::uint8_t>(std::min(kSubpixelBins - 1, static_cast<int>(v * kSubpixelBins)));
+}
+
+bool in_unit_interval(double v) { return v >= 0.0 && v < 1.0; }   // NaN fails
+
+std::string format_number(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
 }
 
 // Draws a prepared glyph into `pixels` (rows packed, `row_bytes` each): RGBA for a colour glyph,
@@ -138,19 +156,40 @@ struct GlyphCache::Impl {
         // glyphs and other colour glyphs are shared by every text colour).
         bool uses_foreground = false;
         std::uint32_t foreground = 0;
+        std::uint64_t pinned_batch = 0;   // the batch that returned it last (0: none)
         std::vector<std::uint8_t> pixels;
         std::int32_t prev = kNone, next = kNone;   // LRU list (head = most recent) or free list
     };
 
+    // A glyph drawn but not kept in a slot (larger than max_bytes, or a pinned colour glyph
+    // asked for in a second text colour).
+    struct Unkept {
+        std::vector<std::uint8_t> pixels;
+        CachedGlyph glyph;
+    };
+
     std::size_t max_bytes;
-    std::vector<Slot> slots;
+    std::deque<Slot> slots;   // a deque: slots never move (handles stay valid)
     std::int32_t head = kNone, tail = kNone, free_list = kNone;
     std::vector<std::int32_t> table;   // slot index or kNone; size a power of two, load ≤ 1/2
     GlyphCacheStats stats;
-    std::vector<std::uint8_t> oversized;   // scratch for a glyph larger than max_bytes
-    CachedGlyph oversized_glyph;
+    // Unkept glyphs: [0, unkept_used) are live (the last get's outside a batch, the batch's in
+    // one); the rest are buffers kept for reuse.
+    std::vector<std::unique_ptr<Unkept>> unkept;
+    std::size_t unkept_used = 0;
+    bool in_batch = false;
+    std::uint64_t batch = 0;   // the current (or last) batch's number, from 1
 
     explicit Impl(std::size_t max) : max_bytes(max) {}
+
+    bool pinned(std::int32_t s) { return in_batch && at(s).pinned_batch == batch; }
+    void pin(std::int32_t s) {
+        if (in_batch) at(s).pinned_batch = batch;
+    }
+    Unkept& next_unkept() {
+        if (unkept_used == unkept.size()) unkept.push_back(std::make_unique<Unkept>());
+        return *unkept[unkept_used++];
+    }
 
     std::size_t slot_bytes(const Slot& s) const { return s.pixels.capacity() + kEntryOverheadBytes; }
 
@@ -244,14 +283,40 @@ void GlyphCache::clear() {
     impl_->stats.evictions = kept.evictions;
 }
 
-Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::uint64_t font_id,
-                                             GlyphId gid, const GlyphRenderOptions& options) {
+Status GlyphCache::begin_batch() {
     Impl& c = *impl_;
+    if (c.in_batch) return Error{"glyph cache: begin_batch() inside a batch (batches do not nest)"};
+    c.in_batch = true;
+    ++c.batch;
+    c.unkept_used = 0;
+    return ok_status();
+}
+
+void GlyphCache::end_batch() {
+    Impl& c = *impl_;
+    c.in_batch = false;
+    c.unkept_used = 0;
+    // Unkept glyphs are outside the bound: keep one buffer for reuse, free the batch's others.
+    if (c.unkept.size() > 1) c.unkept.resize(1);
+}
+
+bool GlyphCache::in_batch() const { return impl_->in_batch; }
+
+Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, GlyphId gid,
+                                             const GlyphRenderOptions& options) {
+    Impl& c = *impl_;
+    if (!in_unit_interval(options.offset_px.x) || !in_unit_interval(options.offset_px.y))
+        return Error{"glyph " + std::to_string(gid) + ": pen offset (" +
+                     format_number(options.offset_px.x) + ", " +
+                     format_number(options.offset_px.y) + ") is outside [0, 1): the glyph cache "
+                     "takes the pen's fractional part (the caller adds the whole pixels)"};
+    // Outside a batch, the last get's unkept glyph is free again.
+    if (!c.in_batch) c.unkept_used = 0;
     GlyphRenderOptions o = options;
     const std::uint8_t bx = bin_of(options.offset_px.x), by = bin_of(options.offset_px.y);
     o.offset_px = {static_cast<double>(bx) / kSubpixelBins, static_cast<double>(by) / kSubpixelBins};
     const FillOptions& f = o.fill;
-    const Key key{font_id,
+    const Key key{rasterizer.instance_id(),
                   bits(o.size_px),
                   bits(f.flatten.tolerance_px),
                   bits(f.flatten.classic_flatness_epsilon),
@@ -273,6 +338,7 @@ Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::u
                   custom_palette_hash(o.color.palette.custom)};
     const std::uint32_t foreground = rgba_bits(o.color.foreground);
 
+    bool keep = true;   // false: draw into an unkept buffer, leave the slots alone
     if (std::size_t pos = c.find_pos(key); pos != SIZE_MAX) {
         std::int32_t s = c.table[pos];
         if (!c.at(s).uses_foreground || c.at(s).foreground == foreground) {
@@ -280,15 +346,21 @@ Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::u
                 c.unlink(s);
                 c.push_front(s);
             }
+            c.pin(s);
             ++c.stats.hits;
             return &c.at(s).glyph;
         }
-        // Painted in another text colour: dropped, and painted again below.
-        c.unlink(s);
-        c.table_erase(pos);
-        c.stats.bytes -= c.slot_bytes(c.at(s));
-        --c.stats.entries;
-        c.release(s);
+        if (c.pinned(s)) {
+            // This batch holds it in another text colour: that handle must stay as it is.
+            keep = false;
+        } else {
+            // Painted in another text colour: dropped, and painted again below.
+            c.unlink(s);
+            c.table_erase(pos);
+            c.stats.bytes -= c.slot_bytes(c.at(s));
+            --c.stats.entries;
+            c.release(s);
+        }
     }
     ++c.stats.misses;
 
@@ -299,17 +371,23 @@ Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::u
     const int row_bytes = box.width * (box.color ? 4 : f.format == CoverageFormat::Lcd ? 3 : 1);
     const std::size_t need = static_cast<std::size_t>(row_bytes) * static_cast<std::size_t>(box.height);
 
-    if (need + kEntryOverheadBytes > c.max_bytes) {
-        c.oversized.resize(need);
-        auto drawn = draw_into(rasterizer, *glyph, c.oversized.data(), row_bytes);
-        if (!drawn) return drawn.error();
-        c.oversized_glyph = *drawn;
-        return &c.oversized_glyph;
+    if (!keep || need + kEntryOverheadBytes > c.max_bytes) {
+        Impl::Unkept& unkept = c.next_unkept();
+        unkept.pixels.resize(need);
+        auto drawn = draw_into(rasterizer, *glyph, unkept.pixels.data(), row_bytes);
+        if (!drawn) {
+            --c.unkept_used;
+            return drawn.error();
+        }
+        unkept.glyph = *drawn;
+        return &unkept.glyph;
     }
 
-    // Make room; keep the last evicted slot (and its buffer) for the new glyph.
+    // Make room (never evicting a slot this batch pinned); keep the last evicted slot (and its
+    // buffer) for the new glyph.
     std::int32_t s = kNone;
-    while (c.stats.entries > 0 && c.stats.bytes + need + kEntryOverheadBytes > c.max_bytes) {
+    while (c.stats.entries > 0 && c.stats.bytes + need + kEntryOverheadBytes > c.max_bytes &&
+           !c.pinned(c.tail)) {
         if (s != kNone) c.release(s);
         s = c.evict_tail();
     }
@@ -335,6 +413,8 @@ Expected<const CachedGlyph*> GlyphCache::get(GlyphRasterizer& rasterizer, std::u
     slot.glyph = *drawn;
     slot.uses_foreground = glyph->paint && glyph->paint->uses_foreground;
     slot.foreground = foreground;
+    slot.pinned_batch = 0;
+    c.pin(s);
     c.table_insert(s);
     c.push_front(s);
     c.stats.bytes += c.slot_bytes(slot);

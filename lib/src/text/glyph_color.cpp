@@ -51,7 +51,7 @@ Status box_of(Font& font, GlyphId gid, double x0, double y0, double x1, double y
 }  // namespace
 
 ColorFormat GlyphRasterizer::color_format(GlyphId gid) {
-    return tables_.any() ? bezel::color_format(*font_, gid) : ColorFormat::None;
+    return tables_.any() ? bezel::color_format(font_, gid) : ColorFormat::None;
 }
 
 bool GlyphRasterizer::is_color(GlyphId gid, const GlyphColorOptions& options) {
@@ -66,12 +66,12 @@ Expected<PreparedGlyph> GlyphRasterizer::prepare_color(GlyphId gid, ColorFormat 
     glyph.box.color = true;
     const Vec2 pen = options.offset_px;
     if (format == ColorFormat::Bitmap) {
-        auto bitmap = load_color_bitmap(*font_, gid, options.size_px);
+        auto bitmap = load_color_bitmap(font_, gid, options.size_px);
         if (!bitmap) return bitmap.error();
         const double k = options.size_px / bitmap->strike_px;
         glyph.box.advance_px = bitmap->advance_px * k;
         if (bitmap->width > 0 && bitmap->height > 0) {
-            Status boxed = box_of(*font_, gid, bitmap->left * k + pen.x, -bitmap->top * k + pen.y,
+            Status boxed = box_of(font_, gid, bitmap->left * k + pen.x, -bitmap->top * k + pen.y,
                                   (bitmap->left + bitmap->width) * k + pen.x,
                                   (bitmap->height - bitmap->top) * k + pen.y, true, glyph.box);
             if (!boxed) return boxed.error();
@@ -79,16 +79,16 @@ Expected<PreparedGlyph> GlyphRasterizer::prepare_color(GlyphId gid, ColorFormat 
         glyph.bitmap = std::make_shared<const ColorBitmap>(std::move(*bitmap));
         return glyph;
     }
-    auto paint = load_color_glyph(*font_, gid, options.color.palette);
+    auto paint = load_color_glyph(font_, gid, options.color.palette);
     if (!paint) return paint.error();
     // The builder keeps the graph's invariants; checked here too, since a refused graph has an
     // empty box and would otherwise draw as silently blank.
     if (Status valid = validate(*paint); !valid)
-        return Error{label(*font_, gid) + ": " + valid.error().message};
-    auto metrics = font_->glyph_metrics(gid, {options.size_px, Hinting::None});
+        return Error{label(font_, gid) + ": " + valid.error().message};
+    auto metrics = font_.glyph_metrics(gid, {options.size_px, Hinting::None});
     if (!metrics) return metrics.error();
     glyph.box.advance_px = metrics->advance_px;
-    const double s = options.size_px / font_->metrics().units_per_em;
+    const double s = options.size_px / font_.metrics().units_per_em;
     const Affine to_pen = Affine::skew(-options.slant, 0) * Affine{s, 0, 0, -s, pen.x, pen.y};
     const Rect bounds = paint_bounds(*paint);
     if (!bounds.is_empty()) {
@@ -96,7 +96,7 @@ Expected<PreparedGlyph> GlyphRasterizer::prepare_color(GlyphId gid, ColorFormat 
         for (Point corner : {Point{bounds.x0, bounds.y0}, Point{bounds.x1, bounds.y0},
                              Point{bounds.x0, bounds.y1}, Point{bounds.x1, bounds.y1}})
             px = px.union_with(to_pen * corner);
-        Status boxed = box_of(*font_, gid, px.x0, px.y0, px.x1, px.y1, false, glyph.box);
+        Status boxed = box_of(font_, gid, px.x0, px.y0, px.x1, px.y1, false, glyph.box);
         if (!boxed) return boxed.error();
     }
     // The box's top-left pixel is (left, −top) from the pen's whole-pixel origin.
@@ -111,7 +111,7 @@ Status GlyphRasterizer::draw_rgba(const PreparedGlyph& glyph, const RgbaView& ta
     const GlyphBox& box = glyph.box;
     if (box.width == 0 || box.height == 0) return ok_status();
     if (target.width < box.width || target.height < box.height || !target.data)
-        return Error{label(*font_, glyph.gid) + ": target " + std::to_string(target.width) + "x" +
+        return Error{label(font_, glyph.gid) + ": target " + std::to_string(target.width) + "x" +
                      std::to_string(target.height) + " is smaller than the glyph's " +
                      std::to_string(box.width) + "x" + std::to_string(box.height) + " pixels"};
     const RgbaView corner = target.sub(0, 0, box.width, box.height);
@@ -126,11 +126,11 @@ Status GlyphRasterizer::draw_rgba(const PreparedGlyph& glyph, const RgbaView& ta
         paint.foreground = glyph.options.color.foreground;
         paint.flatten = glyph.options.fill.flatten;
         Status painted = painter_->paint(*glyph.paint, paint, corner);
-        if (!painted) return Error{label(*font_, glyph.gid) + ": " + painted.error().message};
+        if (!painted) return Error{label(font_, glyph.gid) + ": " + painted.error().message};
         return ok_status();
     }
     if (glyph.options.fill.format == CoverageFormat::Lcd)
-        return Error{label(*font_, glyph.gid) +
+        return Error{label(font_, glyph.gid) +
                      ": LCD coverage cannot be drawn into RGBA (one alpha per pixel)"};
     // The coverage is drawn into the first box.width bytes of each row, then widened in place to
     // premultiplied foreground · coverage, right to left so no byte is read after it is written.

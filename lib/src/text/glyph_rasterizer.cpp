@@ -103,7 +103,7 @@ Status freetype_box(GlyphId gid, const Rect& b, const GlyphRenderOptions& o, Gly
 
 }  // namespace
 
-GlyphRasterizer::GlyphRasterizer(Font& font) : font_(&font), tables_(color_tables(font)) {}
+GlyphRasterizer::GlyphRasterizer(Font& font) : font_(font.impl_), tables_(color_tables(font)) {}
 
 Expected<PreparedGlyph> GlyphRasterizer::prepare(GlyphId gid, const GlyphRenderOptions& options) {
     if (auto ok = check_options(gid, options); !ok) return ok.error();
@@ -112,7 +112,7 @@ Expected<PreparedGlyph> GlyphRasterizer::prepare(GlyphId gid, const GlyphRenderO
         const ColorFormat format = color_format(gid);
         if (drawn_in_color(format)) return prepare_color(gid, format, options);
     }
-    auto outline = font_->outline(gid, {options.size_px, options.hinting});
+    auto outline = font_.outline(gid, {options.size_px, options.hinting});
     if (!outline) return outline.error();
     PreparedGlyph glyph;
     glyph.gid = gid;

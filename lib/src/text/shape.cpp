@@ -18,8 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <system_error>
+#include <memory>
 
 #include <hb-ot.h>
 #include <hb.h>
@@ -44,16 +43,25 @@ std::string format_number(double v) {
     return buf;
 }
 
-Status check_font_file(const std::string& file) {
-    std::error_code ec;
-    const auto status = std::filesystem::status(file, ec);
-    if (status.type() == std::filesystem::file_type::not_found) return Error{file + ": no such file"};
-    if (ec) return Error{file + ": " + ec.message()};
-    if (status.type() == std::filesystem::file_type::directory)
-        return Error{file + ": is a directory, not a font file"};
-    if (status.type() != std::filesystem::file_type::regular)
-        return Error{file + ": not a regular file"};
-    return ok_status();
+// The HarfBuzz face of a FontFace, made once and shared by every Shaper of the face (HarfBuzz
+// faces are immutable once made and safe to read from any number of threads; each Shaper has its
+// own hb_font). The blob reads the face's bytes in place; it needs no owner of its own, since the
+// FontFace keeps the bytes alive for as long as it keeps this face. Null when HarfBuzz does not
+// read the bytes as OpenType (a format only FreeType reads: Type 1, BDF, PCF).
+std::shared_ptr<const void> make_hb_face(const FontFace& source) {
+    hb_blob_t* blob = hb_blob_create(reinterpret_cast<const char*>(source.data()),
+                                     static_cast<unsigned>(source.size()),
+                                     HB_MEMORY_MODE_READONLY, nullptr, nullptr);
+    const unsigned count = hb_face_count(blob);
+    if (count == 0 || static_cast<unsigned>(source.face_index()) >= count) {
+        hb_blob_destroy(blob);
+        return nullptr;
+    }
+    hb_face_t* face = hb_face_create(blob, static_cast<unsigned>(source.face_index()));
+    hb_blob_destroy(blob);   // the face holds its own reference
+    hb_face_make_immutable(face);
+    return std::shared_ptr<const void>(
+        face, [](const void* f) { hb_face_destroy(static_cast<hb_face_t*>(const_cast<void*>(f))); });
 }
 
 hb_direction_t to_hb(Direction d) {
@@ -80,8 +88,9 @@ Direction from_hb(hb_direction_t d) {
 
 struct Shaper::Impl {
     std::string file;
-    hb_blob_t* blob = nullptr;
-    hb_face_t* face = nullptr;
+    FontFace source;                          // keeps the bytes (and the shared face) alive
+    std::shared_ptr<const void> face_owner;   // the face's shared HarfBuzz face
+    hb_face_t* face = nullptr;                // face_owner's
     hb_font_t* font = nullptr;
     hb_buffer_t* buffer = nullptr;   // reused by every shape() call
     std::vector<hb_ot_var_axis_info_t> axes;
@@ -90,14 +99,12 @@ struct Shaper::Impl {
     std::vector<hb_variation_t> wanted;    // scratch
     std::vector<hb_feature_t> features;    // scratch
 
-    Impl() = default;
+    explicit Impl(FontFace f) : source(std::move(f)) {}
     Impl(const Impl&) = delete;
     Impl& operator=(const Impl&) = delete;
     ~Impl() {
         hb_buffer_destroy(buffer);
         hb_font_destroy(font);
-        hb_face_destroy(face);
-        hb_blob_destroy(blob);
     }
 
     Status set_variations(const std::vector<VariationSetting>& settings);
@@ -169,23 +176,24 @@ Status check_language_tag(const std::string& tag) {
 }
 
 Expected<Shaper> Shaper::open(const std::string& file, int face_index) {
-    if (auto ok = check_font_file(file); !ok) return ok.error();
-    auto impl = std::make_unique<Impl>();
-    impl->file = file;
-    impl->blob = hb_blob_create_from_file_or_fail(file.c_str());
-    if (impl->blob == nullptr) return Error{file + ": cannot read the file"};
-    const unsigned count = hb_face_count(impl->blob);
-    if (count == 0) return Error{file + ": not an OpenType or TrueType font"};
-    if (face_index < 0 || static_cast<unsigned>(face_index) >= count)
-        return Error{file + ": face index " + std::to_string(face_index) + " out of range (0.." +
-                     std::to_string(count - 1) + ")"};
-    impl->face = hb_face_create(impl->blob, static_cast<unsigned>(face_index));
+    auto face = FontFace::open(file, face_index);
+    if (!face) return face.error();
+    return open(*face);
+}
+
+Expected<Shaper> Shaper::open(const FontFace& source) {
+    auto impl = std::make_unique<Impl>(source);
+    impl->file = source.name();
+    impl->face_owner = font_detail::derived_state(source, make_hb_face);
+    if (!impl->face_owner) return Error{impl->file + ": not an OpenType or TrueType font"};
+    impl->face = static_cast<hb_face_t*>(const_cast<void*>(impl->face_owner.get()));
     if (hb_face_get_glyph_count(impl->face) == 0)
-        return Error{file + ": face " + std::to_string(face_index) + " has no glyphs"};
+        return Error{impl->file + ": face " + std::to_string(source.face_index()) +
+                     " has no glyphs"};
     impl->font = hb_font_create(impl->face);
     impl->buffer = hb_buffer_create();
     if (!hb_buffer_allocation_successful(impl->buffer))
-        return Error{file + ": cannot allocate a shaping buffer"};
+        return Error{impl->file + ": cannot allocate a shaping buffer"};
     unsigned n_axes = hb_ot_var_get_axis_count(impl->face);
     impl->axes.resize(n_axes);
     hb_ot_var_get_axis_infos(impl->face, 0, &n_axes, impl->axes.data());

@@ -26,22 +26,6 @@ namespace {
 // of what kMaxImageDim alone would allow (4 GiB).
 constexpr double kMaxPagePixels = double{1 << 26};
 
-// A font id for the cache: the font's index in the collection and its variation coordinates, so
-// switching back and forth between instances keeps both in the cache.
-std::uint64_t font_id_of(std::size_t index, const std::vector<VariationSetting>& variations) {
-    std::uint64_t h = 0xcbf29ce484222325ULL;   // FNV-1a over the index, tags and values' bits
-    auto eat = [&h](const void* p, std::size_t n) {
-        const auto* b = static_cast<const unsigned char*>(p);
-        for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 0x100000001b3ULL;
-    };
-    eat(&index, sizeof index);
-    for (const VariationSetting& v : variations) {
-        eat(v.tag.data(), v.tag.size());
-        eat(&v.value, sizeof v.value);
-    }
-    return h;
-}
-
 bool same_variations(const std::vector<VariationSetting>& a, const std::vector<VariationSetting>& b) {
     if (a.size() != b.size()) return false;
     for (std::size_t i = 0; i < a.size(); ++i)
@@ -61,9 +45,10 @@ std::string whole_number(double v) {
 
 // What the renderer keeps per font of the collection.
 struct FontSlot {
-    std::unique_ptr<GlyphRasterizer> rasterizer;   // borrows the collection's Font (stable address)
+    // Shares the collection's Font: the cache keys its glyphs on the Font's instance_id(), which
+    // follows the variations set below.
+    std::unique_ptr<GlyphRasterizer> rasterizer;
     std::vector<VariationSetting> applied;        // the coordinates the Font is set to
-    std::uint64_t font_id = 0;
 };
 
 struct TextRenderer::Impl {
@@ -84,7 +69,6 @@ struct TextRenderer::Impl {
             FontSlot slot;
             slot.rasterizer = std::make_unique<GlyphRasterizer>(fonts.font(slots.size()));
             slot.applied = fonts.source(slots.size()).variations;
-            slot.font_id = font_id_of(slots.size(), slot.applied);
             slots.push_back(std::move(slot));
         }
         for (std::size_t i = 0; i < slots.size(); ++i) {
@@ -97,7 +81,6 @@ struct TextRenderer::Impl {
                                                                 : set.error();
             }
             slots[i].applied = wanted;
-            slots[i].font_id = font_id_of(i, wanted);
         }
         return ok_status();
     }
@@ -196,7 +179,7 @@ Status TextRenderer::draw(std::string_view utf8, const TextRenderOptions& option
         if (std::fabs(column) > kMaxImageDim * 2.0 || std::fabs(row) > kMaxImageDim * 2.0)
             return nullptr;
         FontSlot& slot = r.slots[g.font];
-        auto cached = r.cache.get(*slot.rasterizer, slot.font_id, g.gid, glyph);
+        auto cached = r.cache.get(*slot.rasterizer, g.gid, glyph);
         if (!cached) return cached.error();
         const CachedGlyph& c = **cached;
         if (c.box.width == 0) return nullptr;
