@@ -46,7 +46,7 @@ bezel::Status render_glyph_texels(bezel::GlyphRasterizer& rasterizer, bezel::Gly
     auto prepared = rasterizer.prepare(gid, options);
     if (!prepared) return prepared.error();
     out.advance_px = static_cast<float>(prepared->box.advance_px);
-    const bezel::Rect bounds = prepared->path.bounds();
+    const bezel::Rect bounds = h * v > 1 ? prepared->path.bounds() : bezel::Rect{};
     for (int ky = 0; ky < v; ++ky) {
         for (int kx = 0; kx < h; ++kx) {
             const bezel::Vec2 offset{static_cast<double>(kx) / h, static_cast<double>(ky) / v};
