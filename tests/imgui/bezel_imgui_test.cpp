@@ -385,6 +385,20 @@ TEST(BezelImGuiBadInput, OversampleAndSizeOutOfRangeFailTheBuild) {
     }
 }
 
+// 1500 px glyphs in a 64 px wide atlas: the first few fill the tallest texture it may grow to
+// (64 × 32768 texels); the build stops with an error before drawing (or allocating) the rest.
+TEST(BezelImGuiBadInput, GlyphsLargerThanTheAtlasFailTheBuildBeforeAllocatingThem) {
+    FontBytes bytes(kDejaVu);
+    static const ImWchar ranges[] = {'A', 'Z', 0};
+    ImFontAtlas atlas;
+    atlas.TexDesiredWidth = 64;
+    ImFontConfig cfg;
+    cfg.OversampleH = 1;
+    add_font(atlas, bytes, 1500, cfg, ranges);
+    const std::string msg = failed_build(atlas);
+    EXPECT_NE(msg.find("does not fit the atlas"), std::string::npos) << msg;
+}
+
 TEST(BezelImGuiBadInput, AFailedBuildLeavesTheNextGoodBuildWorking) {
     FontBytes bytes(kDejaVu);
     ImFontAtlas atlas;

@@ -69,6 +69,15 @@ bezel::Expected<std::vector<ImWchar>> requested(ImFontAtlas& atlas, const ImFont
     return out;
 }
 
+// The most texels the atlas can hold: its widest texture (TexDesiredWidth, or the widest ImGui
+// picks, 4096) times kMaxTexHeight. Glyphs are counted against it as they are drawn, so a huge
+// SizePixels meets an error, not an allocation of its bitmaps.
+std::size_t max_texels(const ImFontAtlas& atlas) {
+    const int width = atlas.TexDesiredWidth > 0 ? std::min(atlas.TexDesiredWidth, bezel::kMaxBitmapDim)
+                                                : 4096;
+    return static_cast<std::size_t>(width) * kMaxTexHeight;
+}
+
 // Opens one config's font and renders every requested glyph it has that no earlier config of
 // the same destination font supplied (`taken`: first config wins, as in ImGui's builders).
 bezel::Status gather(ImFontAtlas& atlas, int index, std::vector<bool>& taken, Source& src,
@@ -126,8 +135,8 @@ bezel::Status gather(ImFontAtlas& atlas, int index, std::vector<bool>& taken, So
         SourceGlyph g;
         g.codepoint = cp;
         auto drawn = detail::render_glyph_texels(rasterizer, *gid, options, oversample,
-                                                 (flags & Monochrome) != 0, store, scratch,
-                                                 g.texels);
+                                                 (flags & Monochrome) != 0, max_texels(atlas),
+                                                 store, scratch, g.texels);
         if (!drawn) return bezel::Error{name + ": " + hex(cp) + ": " + drawn.error().message};
         src.glyphs.push_back(g);
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <string>
 
 namespace bezel_imgui::detail {
 
@@ -31,7 +32,8 @@ struct Phase {
 
 bezel::Status render_glyph_texels(bezel::GlyphRasterizer& rasterizer, bezel::GlyphId gid,
                                   bezel::GlyphRenderOptions options, Oversample oversample,
-                                  bool monochrome, std::vector<std::uint8_t>& store,
+                                  bool monochrome, std::size_t max_store_bytes,
+                                  std::vector<std::uint8_t>& store,
                                   std::vector<std::uint8_t>& scratch, GlyphTexels& out) {
     const int h = oversample.h, v = oversample.v;
     Phase phases[64];   // h, v ≤ kMaxOversample = 8
@@ -47,6 +49,15 @@ bezel::Status render_glyph_texels(bezel::GlyphRasterizer& rasterizer, bezel::Gly
     if (!prepared) return prepared.error();
     out.advance_px = static_cast<float>(prepared->box.advance_px);
     const bezel::Rect bounds = h * v > 1 ? prepared->path.bounds() : bezel::Rect{};
+    // Its texels: about h·v times its box (each box is within kMaxBitmapDim², so no overflow).
+    const std::size_t need = static_cast<std::size_t>(prepared->box.width + 1) * h *
+                             static_cast<std::size_t>(prepared->box.height + 1) * v;
+    if (need > max_store_bytes || store.size() > max_store_bytes - need)
+        return bezel::Error{"its " + std::to_string(prepared->box.width) + "x" +
+                            std::to_string(prepared->box.height) + " px bitmap, " +
+                            std::to_string(h) + "x" + std::to_string(v) +
+                            " oversampled, does not fit the atlas with the glyphs before it (" +
+                            std::to_string(max_store_bytes) + " texels at most)"};
     for (int ky = 0; ky < v; ++ky) {
         for (int kx = 0; kx < h; ++kx) {
             const bezel::Vec2 offset{static_cast<double>(kx) / h, static_cast<double>(ky) / v};

@@ -39,10 +39,14 @@ struct GlyphTexels {
 //   x0 = m_min/h + (h − 1)/(2h),   x1 = x0 + width/h      (stb's xoff: x0/h − (h − 1)/(2h)
 //                                                          for its box left x0 = m_min + h − 1)
 // With h = v = 1 the texels are the bitmap GlyphRasterizer draws at pen offset 0.
-// `monochrome`: coverage ≥ 128 becomes 255, the rest 0. Errors: GlyphRasterizer's.
+// `monochrome`: coverage ≥ 128 becomes 255, the rest 0. `max_store_bytes` bounds `store`
+// (the texture the glyphs must fit): a glyph that would grow it past the bound is an error,
+// found from its box before anything is drawn or allocated for it. Errors: that, and
+// GlyphRasterizer's.
 bezel::Status render_glyph_texels(bezel::GlyphRasterizer& rasterizer, bezel::GlyphId gid,
                                   bezel::GlyphRenderOptions options, Oversample oversample,
-                                  bool monochrome, std::vector<std::uint8_t>& store,
+                                  bool monochrome, std::size_t max_store_bytes,
+                                  std::vector<std::uint8_t>& store,
                                   std::vector<std::uint8_t>& scratch, GlyphTexels& out);
 
 }  // namespace bezel_imgui::detail
