@@ -76,7 +76,9 @@ const ImFontBuilderIO* builder();
 // ConfigData) and what is wrong: no font configured, data bezel cannot open (its message), FontNo
 // out of range, SizePixels not in (0, kMaxFontSizePx], an oversample outside 1..kMaxOversample,
 // a glyph range whose first code point is 0 or after its last, a font that gets no glyph at all
-// (ImGui needs one), a glyph bezel fails to draw, glyphs that do not fit the texture.
+// (ImGui needs one), a glyph bezel fails to draw, glyphs that do not fit the texture (counted
+// as they are drawn, against the largest texture the atlas may grow to: TexDesiredWidth or 4096
+// wide, kMaxTexHeight tall).
 bezel::Status build_atlas(ImFontAtlas& atlas);
 
 // The message of the last failed Build() through builder() on this thread ("" after a success).
