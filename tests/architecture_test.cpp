@@ -175,6 +175,27 @@ TEST(Architecture, EveryPublicHeaderBelongsToOneModule) {
             << "docs/architecture.md lists " << h << " under " << m << ", which does not exist";
 }
 
+// libbezel.so exports what the public headers declare and nothing else (CMakeLists.txt): each
+// header that declares anything wraps its declarations, after its #includes, in default
+// visibility over a library compiled with -fvisibility=hidden. A header without the pair would
+// compile and link statically, and be missing from the shared library.
+TEST(Architecture, EveryPublicHeaderExportsItsDeclarations) {
+    const std::regex push(R"(\n#pragma GCC visibility push\(default\)[^\n]*\nnamespace bezel)");
+    const std::string pop = "\n#pragma GCC visibility pop\n";
+    for (const auto& e : fs::directory_iterator(kRoot / "lib/include/bezel")) {
+        const std::string text = read_file(e.path());
+        const std::string name = e.path().filename().string();
+        if (text.find("namespace bezel") == std::string::npos) continue;  // an umbrella header
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(text, m, push))
+            << name << ": no `#pragma GCC visibility push(default)` right before namespace bezel";
+        EXPECT_EQ(text.find("#include", static_cast<std::size_t>(m.position(0))), std::string::npos)
+            << name << ": an #include inside the exported region";
+        EXPECT_EQ(text.size() >= pop.size() ? text.substr(text.size() - pop.size()) : "", pop)
+            << name << ": does not end with `#pragma GCC visibility pop`";
+    }
+}
+
 TEST(Architecture, LibraryIncludesFollowTheModuleMap) {
     const auto doc = documented_map();
     std::map<std::string, std::string> owner;

@@ -19,6 +19,7 @@
 #include "bezel/expected.hpp"
 #include "bezel/geometry.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 struct CubicBez;
@@ -353,3 +354,4 @@ struct Bezier {
 };
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -24,6 +24,7 @@
 #include "bezel/font.hpp"
 #include "bezel/paint.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // How a glyph is coloured, the first of these the font has for it, in the order bezel prefers
@@ -101,3 +102,4 @@ struct ColorBitmap {
 Expected<ColorBitmap> load_color_bitmap(Font& font, GlyphId gid, double size_px);
 
 }  // namespace bezel
+#pragma GCC visibility pop

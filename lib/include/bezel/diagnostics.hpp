@@ -4,6 +4,7 @@
 // bug report can say which code produced it); nothing here changes any output.
 #pragma once
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // The SIMD level of the raster's coverage sweep chosen for this CPU at run time: "avx2" or
@@ -11,3 +12,4 @@ namespace bezel {
 const char* raster_kernel_name();
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -13,6 +13,7 @@
 #include <utility>
 #include <variant>
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // What went wrong and with which input. `message` is one line, meant for a human, and already
@@ -68,3 +69,4 @@ using Status = Expected<Unit>;
 inline Status ok_status() { return Unit{}; }
 
 }  // namespace bezel
+#pragma GCC visibility pop

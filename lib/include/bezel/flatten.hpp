@@ -32,6 +32,7 @@
 #include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // Flattened contours, all closed implicitly (a filler joins each last point to its first).
@@ -98,3 +99,4 @@ Status flatten_checked(const Path& path, const Affine& transform, const FlattenO
                        Polylines& out);
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -23,6 +23,7 @@
 #include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 using GlyphId = std::uint32_t;
@@ -238,3 +239,4 @@ private:
 };
 
 }  // namespace bezel
+#pragma GCC visibility pop

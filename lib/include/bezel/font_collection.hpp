@@ -17,6 +17,7 @@
 #include "bezel/shape.hpp"
 #include "bezel/system_fonts.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // Where a font of the collection came from.
@@ -128,3 +129,4 @@ private:
 };
 
 }  // namespace bezel
+#pragma GCC visibility pop

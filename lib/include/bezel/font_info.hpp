@@ -11,6 +11,7 @@
 #include "bezel/expected.hpp"
 #include "bezel/font.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 struct FontTable {
@@ -49,3 +50,4 @@ struct FontInfo {
 Expected<FontInfo> font_info(const std::string& file, int face_index = 0);
 
 }  // namespace bezel
+#pragma GCC visibility pop

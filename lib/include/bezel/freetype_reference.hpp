@@ -8,6 +8,7 @@
 #include "bezel/geometry.hpp"
 #include "bezel/image.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // FreeType's own anti-aliased rasterizer (FT_Outline_Render with FT_RASTER_FLAG_AA, the "smooth"
@@ -21,3 +22,4 @@ Status render_with_freetype(Font& font, GlyphId gid, const OutlineOptions& optio
                             const MaskView& target, Vec2 origin);
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // A 2D vector or point. One type serves both (Point is an alias): the affine algebra of Bézier
@@ -167,3 +168,4 @@ int solve_cubic_in(double a, double b, double c, double d, double t_min, double 
                    double roots[3]);
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -24,6 +24,7 @@
 #include "bezel/limits.hpp"
 #include "bezel/raster.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // Where a glyph's bitmap box is put around its outline.
@@ -264,3 +265,4 @@ private:
 };
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -27,6 +27,7 @@
 #include "bezel/expected.hpp"
 #include "bezel/limits.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // 8-bit alpha (0 = empty, 255 = fully covered), writable.
@@ -327,3 +328,4 @@ std::vector<std::uint8_t> encode_pgm(ConstMaskView mask);
 std::string encode_ansi(const Image& image, int max_columns = 0);
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -41,6 +41,7 @@
 #include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // ---- Limits and tolerances (relative to the inputs' coordinate scale) --------------------------
@@ -166,3 +167,4 @@ Expected<PathIntersections> intersect_paths(const Path& a, const Path& b);
 Expected<PathIntersections> self_intersect_path(const Path& path);
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -16,6 +16,7 @@
 #include "bezel/font_collection.hpp"
 #include "bezel/shape.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 enum class Align : std::uint8_t { Start, Center, End };
@@ -132,3 +133,4 @@ struct MissingGlyphs {
 MissingGlyphs find_missing_glyphs(const TextLayout& layout, std::string_view utf8);
 
 }  // namespace bezel
+#pragma GCC visibility pop

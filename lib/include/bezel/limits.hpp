@@ -7,6 +7,7 @@
 
 #include <cstddef>
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // --- image ------------------------------------------------------------------------------------
@@ -164,3 +165,4 @@ inline constexpr std::size_t kMaxMeshTriangles = std::size_t{1} << 22;
 inline constexpr int kMaxSurfaceImageDim = 8192;
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -37,6 +37,7 @@
 #include "bezel/path.hpp"
 #include "bezel/raster.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // --- Premultiplied RGBA targets ------------------------------------------------------------------
@@ -253,3 +254,4 @@ void premultiply(const Image& image, const RgbaView& target);
 void blend_rgba(Image& page, ConstRgbaView glyph, int x, int y, float opacity = 1);
 
 }  // namespace bezel
+#pragma GCC visibility pop

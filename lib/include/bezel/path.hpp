@@ -31,6 +31,7 @@
 #include "bezel/geometry.hpp"
 #include "bezel/limits.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 enum class Verb : std::uint8_t { Move, Line, Quad, Cubic, Close };
@@ -236,3 +237,4 @@ struct SvgArc {
 void append_svg_arc(Path& path, Point from, const SvgArc& arc, double tolerance);
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -36,6 +36,7 @@
 #include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // How winding numbers become coverage.
@@ -197,3 +198,4 @@ private:
 };
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -20,6 +20,7 @@
 #include "bezel/font_face.hpp"
 #include "bezel/limits.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // Decodes UTF-8 strictly (no overlong forms, no surrogates, nothing above U+10FFFF). The error
@@ -124,3 +125,4 @@ private:
 };
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -33,6 +33,7 @@
 #include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // ---- Chaikin corner cutting ------------------------------------------------------------------
@@ -210,3 +211,4 @@ Expected<std::vector<JointReport>> analyze_joints(
     double tolerance = kDefaultContinuityTolerance);
 
 }  // namespace bezel
+#pragma GCC visibility pop

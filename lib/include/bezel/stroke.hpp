@@ -19,6 +19,7 @@
 #include "bezel/limits.hpp"
 #include "bezel/path.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 enum class LineJoin : std::uint8_t { Miter, Round, Bevel };
@@ -48,3 +49,4 @@ Expected<Path> stroke(const Path& path, const StrokeStyle& style);
 Expected<Path> dash(const Path& path, const std::vector<double>& dashes, double dash_offset);
 
 }  // namespace bezel
+#pragma GCC visibility pop

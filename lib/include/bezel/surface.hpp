@@ -39,6 +39,7 @@
 #include "bezel/image.hpp"
 #include "bezel/limits.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // A 3D point or vector (surfaces only; 2D geometry uses Vec2).
@@ -287,3 +288,4 @@ struct SolidStyle {
 Expected<Image> render_solid(const TriangleMesh& mesh, const View& view, const SolidStyle& style);
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -25,6 +25,7 @@
 #include "bezel/font.hpp"
 #include "bezel/limits.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 // Unicode's Default_Ignorable_Code_Point property (DerivedCoreProperties.txt, Unicode 15): soft
@@ -113,3 +114,4 @@ private:
 };
 
 }  // namespace bezel
+#pragma GCC visibility pop

@@ -18,6 +18,7 @@
 #include "bezel/layout.hpp"
 #include "bezel/shape.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 struct TextRenderOptions {
@@ -130,3 +131,4 @@ private:
 };
 
 }  // namespace bezel
+#pragma GCC visibility pop
