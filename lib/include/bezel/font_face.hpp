@@ -21,6 +21,7 @@
 
 #include "bezel/expected.hpp"
 
+#pragma GCC visibility push(default)  // the public API of libbezel.so (docs/architecture.md)
 namespace bezel {
 
 class FontFace;
@@ -84,3 +85,4 @@ private:
 };
 
 }  // namespace bezel
+#pragma GCC visibility pop
