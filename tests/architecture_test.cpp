@@ -245,5 +245,24 @@ TEST(Architecture, CliUsesThePublicLibraryOnly) {
     }
 }
 
+// integrations/ (bezel_imgui and its example) are consumers: public headers only, and none of the
+// third-party libraries bezel hides (they may include their own toolkit's headers).
+TEST(Architecture, IntegrationsUseThePublicLibraryOnly) {
+    int files = 0;
+    for (const auto& e : fs::recursive_directory_iterator(kRoot / "integrations")) {
+        const std::string ext = e.path().extension().string();
+        if (ext != ".cpp" && ext != ".hpp") continue;
+        ++files;
+        const std::string where = fs::relative(e.path(), kRoot).string();
+        for (const std::string& dir : includes(e.path(), kPrivateInclude)) {
+            EXPECT_FALSE(fs::is_directory(kRoot / "lib/src" / dir))
+                << where << " includes a private header of module " << dir;
+        }
+        for (const std::string& h : includes(e.path(), kSystemInclude))
+            EXPECT_EQ(third_party(h), "") << where << " includes <" << h << ">";
+    }
+    EXPECT_GT(files, 0);
+}
+
 }  // namespace
 }  // namespace bezel
