@@ -509,6 +509,38 @@ TEST(BezelImGuiOptions, HintingFlagsMapAsImGuiFreeTypesDo) {
     EXPECT_NE(glyph_of(none, 'm').AdvanceX, std::round(glyph_of(none, 'm').AdvanceX));
 }
 
+// The Bitmap flag draws a font's embedded strike at its size, once even when oversampled.
+// fonts-test/bitmap-strike: ascender − descender is one em, so SizePixels 16 is 16 ppem, where
+// 'A' has a 1-bit 8×10 checkerboard strike (inked where x + y is odd), advance 11 px; its
+// outline is a filled rectangle, which is what the same glyph is without the flag.
+TEST(BezelImGuiOptions, BitmapFlagDrawsTheFontsStrikeAtItsSize) {
+    FontBytes bytes(std::string(BEZEL_FONTS_DIR) + "/bitmap-strike/BitmapStrike.ttf");
+    static const ImWchar just_a[] = {'A', 'A', 0};
+    ImFontConfig strike, outline;
+    strike.GlyphRanges = outline.GlyphRanges = just_a;
+    strike.OversampleH = outline.OversampleH = 3;
+    strike.FontBuilderFlags = bezel_imgui::NoHinting | bezel_imgui::Bitmap;
+    outline.FontBuilderFlags = bezel_imgui::NoHinting;
+    BuiltFont s, o;
+    build(s, bytes, 16, bezel_imgui::builder(), strike);
+    build(o, bytes, 16, bezel_imgui::builder(), outline);
+    const ImFontGlyph& a = glyph_of(s, 'A');
+    EXPECT_FLOAT_EQ(a.X1 - a.X0, 8.0f);
+    EXPECT_FLOAT_EQ(a.Y1 - a.Y0, 10.0f);
+    EXPECT_FLOAT_EQ(a.AdvanceX, 11.0f);
+    const int u0 = static_cast<int>(std::lround(a.U0 * s.atlas.TexWidth));
+    const int v0 = static_cast<int>(std::lround(a.V0 * s.atlas.TexHeight));
+    for (int y = 0; y < 10; ++y)
+        for (int x = 0; x < 8; ++x)
+            EXPECT_EQ(texel(s.atlas, u0 + x, v0 + y), (x + y) % 2 ? 255 : 0) << x << "," << y;
+    // Without the flag: the outline, whose middle texels are all fully covered.
+    const ImFontGlyph& r = glyph_of(o, 'A');
+    const int cx = static_cast<int>(std::lround((r.U0 + r.U1) / 2 * o.atlas.TexWidth));
+    const int cy = static_cast<int>(std::lround((r.V0 + r.V1) / 2 * o.atlas.TexHeight));
+    EXPECT_EQ(texel(o.atlas, cx, cy), 255);
+    EXPECT_EQ(texel(o.atlas, cx + 1, cy), 255);
+}
+
 TEST(BezelImGuiOptions, EllipsisCharOutsideTheRangesIsAddedAndUsed) {
     FontBytes bytes(kDejaVu);
     static const ImWchar ascii[] = {0x20, 0x7E, 0};

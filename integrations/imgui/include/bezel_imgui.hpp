@@ -42,7 +42,8 @@ enum BuilderFlags : unsigned {
     Oblique = 1u << 6,         // GlyphRenderOptions::slant = kObliqueSlant
     Monochrome = 1u << 7,      // coverage ≥ 1/2 becomes 255, the rest 0 (no anti-aliasing)
     LoadColor = 1u << 8,       // not supported: 1.86's atlas is alpha; colour glyphs give their alpha
-    Bitmap = 1u << 9,          // not supported: no effect
+    Bitmap = 1u << 9,          // GlyphRenderOptions::embedded_bitmaps: a font's strike at the size
+                               // (drawn once, without oversampling: it is whole pixels)
 };
 
 // The hinting a set of flags asks for, as imgui_freetype reads them: NoHinting wins, then

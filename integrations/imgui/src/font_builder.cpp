@@ -121,6 +121,7 @@ bezel::Status gather(ImFontAtlas& atlas, int index, std::vector<bool>& taken, So
     options.hinting = hinting_for_flags(flags);
     if (flags & Bold) options.bold = kBoldStrength;
     if (flags & Oblique) options.slant = kObliqueSlant;
+    if (flags & Bitmap) options.embedded_bitmaps = true;
     // PixelSnapH puts every pen on a whole pixel, where the extra horizontal renders would only
     // blur the glyph (ImGui's own advice is OversampleH = 1 with it).
     const detail::Oversample oversample{cfg.PixelSnapH ? 1 : cfg.OversampleH, cfg.OversampleV};

@@ -35,7 +35,7 @@ bezel::Status render_glyph_texels(bezel::GlyphRasterizer& rasterizer, bezel::Gly
                                   bool monochrome, std::size_t max_store_bytes,
                                   std::vector<std::uint8_t>& store,
                                   std::vector<std::uint8_t>& scratch, GlyphTexels& out) {
-    const int h = oversample.h, v = oversample.v;
+    int h = oversample.h, v = oversample.v;
     Phase phases[64];   // h, v ≤ kMaxOversample = 8
     int count = 0;
     scratch.clear();
@@ -47,6 +47,9 @@ bezel::Status render_glyph_texels(bezel::GlyphRasterizer& rasterizer, bezel::Gly
     options.box = bezel::GlyphBoxMode::Tight;
     auto prepared = rasterizer.prepare(gid, options);
     if (!prepared) return prepared.error();
+    // A bitmap strike is whole pixels, placed at the whole pixel nearest the pen: its subpixel
+    // phases would all be the same bitmap, so it is drawn once, as with OversampleH = V = 1.
+    if (prepared->box.bitmap_strike) h = v = 1;
     out.advance_px = static_cast<float>(prepared->box.advance_px);
     const bezel::Rect bounds = h * v > 1 ? prepared->path.bounds() : bezel::Rect{};
     // Its texels: about h·v times its box (each box is within kMaxBitmapDim², so no overflow).
