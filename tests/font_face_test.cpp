@@ -84,6 +84,28 @@ TEST(FontFace, MemoryFontEqualsFileFontGlyphForGlyph) {
     }
 }
 
+// A TextRenderer of a memory face draws the page the file's renderer draws, pixel for pixel,
+// and a variation set on the list reaches it (FontCollection::from_face).
+TEST(FontFace, TextRendererOfAMemoryFaceDrawsTheFilesPage) {
+    auto bytes = std::make_shared<const std::vector<std::uint8_t>>(read_bytes(kDejaVu));
+    auto face = FontFace::from_memory(bytes, {0, "embedded"});
+    ASSERT_TRUE(face) << face.error().message;
+    auto from_memory = TextRenderer::open(*face);
+    auto from_file = TextRenderer::open(kDejaVu);
+    ASSERT_TRUE(from_memory && from_file);
+    EXPECT_EQ(from_memory->font().file(), "embedded");
+    TextRenderOptions o;
+    o.shape.size_px = 17;
+    auto a = from_memory->render("Hamburgefonstiv AV 0.5", o);
+    auto b = from_file->render("Hamburgefonstiv AV 0.5", o);
+    ASSERT_TRUE(a && b);
+    EXPECT_EQ(*a, *b);
+    // A variation the font does not have is FontCollection::add's error, naming the face.
+    auto varied = FontCollection::from_face(*face, {{"wght", 700}});
+    ASSERT_FALSE(varied);
+    EXPECT_NE(varied.error().message.find("embedded"), std::string::npos) << varied.error().message;
+}
+
 TEST(FontFace, SharedBytesLiveAsLongAsTheLastUser) {
     auto bytes = std::make_shared<const std::vector<std::uint8_t>>(read_bytes(kDejaVu));
     std::weak_ptr<const std::vector<std::uint8_t>> watch = bytes;

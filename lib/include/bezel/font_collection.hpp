@@ -57,6 +57,10 @@ public:
     // (outlines, metrics) and a Shaper (HarfBuzz) of that one face, and sets its variations. Errors name the file and the reason: missing, not a font, face index
     // out of range, an unknown variation axis; an empty list; more than kMaxCollectionFonts.
     static Expected<FontCollection> open(const std::vector<FontSource>& sources);
+    // A list of one face read already (a font from memory; font_face.hpp), at `variations`: what
+    // add(face, variations) appends to a list. Errors as add().
+    static Expected<FontCollection> from_face(const FontFace& face,
+                                              const std::vector<VariationSetting>& variations = {});
     FontCollection(FontCollection&&) noexcept;
     FontCollection& operator=(FontCollection&&) noexcept;
     FontCollection(const FontCollection&) = delete;

@@ -72,6 +72,11 @@ public:
     // Error: the font has no outlines).
     static Expected<TextRenderer> open(const std::string& file, int face_index = 0,
                                        std::size_t cache_bytes = kDefaultGlyphCacheBytes);
+    // A face already read (font_face.hpp: from memory, or shared with other renderers and
+    // threads): the renderer's Font and Shaper are instances of it, nothing is read again.
+    // Errors as FontCollection::add.
+    static Expected<TextRenderer> open(const FontFace& face,
+                                       std::size_t cache_bytes = kDefaultGlyphCacheBytes);
     // A list of fonts, text drawn with fallback (layout.hpp's layout_text over a collection).
     // A bitmap-only colour font (CBDT, sbix) may be in the list: its glyphs are drawn in colour.
     static Expected<TextRenderer> open(FontCollection fonts,

@@ -76,6 +76,13 @@ Expected<FontCollection> FontCollection::open(const std::vector<FontSource>& sou
     return fonts;
 }
 
+Expected<FontCollection> FontCollection::from_face(const FontFace& face,
+                                                   const std::vector<VariationSetting>& variations) {
+    FontCollection fonts(std::make_unique<Impl>());
+    if (auto added = fonts.add(face, variations); !added) return added.error();
+    return fonts;
+}
+
 Expected<std::size_t> FontCollection::add(const FontSource& source, FontOrigin origin) {
     if (impl_->entries.size() >= kMaxCollectionFonts)
         return Error{source.file + ": a font list holds at most " +

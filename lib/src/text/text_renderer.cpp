@@ -98,6 +98,12 @@ Expected<TextRenderer> TextRenderer::open(const std::string& file, int face_inde
     return open(std::move(*fonts), cache_bytes);
 }
 
+Expected<TextRenderer> TextRenderer::open(const FontFace& face, std::size_t cache_bytes) {
+    auto fonts = FontCollection::from_face(face);
+    if (!fonts) return fonts.error();
+    return open(std::move(*fonts), cache_bytes);
+}
+
 Expected<TextRenderer> TextRenderer::open(FontCollection fonts, std::size_t cache_bytes) {
     return TextRenderer(std::make_unique<Impl>(std::move(fonts), cache_bytes));
 }
