@@ -29,6 +29,12 @@ struct Fixture {
     GlyphId gid(char32_t c) const { return font.glyph_for_char(c).value(); }
 };
 
+// The bytes one cache entry of `c` takes (0 when it cannot be rendered).
+std::size_t entry_bytes(Fixture& f, char32_t c, const GlyphRenderOptions& o) {
+    GlyphCache probe;
+    return probe.get(f.rasterizer, f.gid(c), o) ? probe.stats().bytes : 0;
+}
+
 TEST(GlyphCache, RepeatedStringMissesOncePerGlyphAndBin) {
     Fixture f;
     GlyphCache cache;
@@ -142,12 +148,8 @@ TEST(GlyphCache, EvictsTheLeastRecentlyUsed) {
     o.size_px = 30;
     // 'o', 'n' and 'c' are of similar size: room for two and a half of 'o' holds any two of
     // them, not three.
-    std::size_t one = 0;
-    {
-        GlyphCache probe;
-        ASSERT_TRUE(probe.get(f.rasterizer, f.gid(U'o'), o));
-        one = probe.stats().bytes;
-    }
+    const std::size_t one = entry_bytes(f, U'o', o);
+    ASSERT_GT(one, 0u);
     GlyphCache cache(2 * one + one / 2);
     auto get = [&](char32_t c) { ASSERT_TRUE(cache.get(f.rasterizer, f.gid(c), o)); };
     get(U'o');
@@ -312,12 +314,8 @@ TEST(GlyphCache, BatchKeepsEveryGlyphOfTheFrameValidTogether) {
     Fixture f;
     GlyphRenderOptions o;
     o.size_px = 30;
-    std::size_t one = 0;
-    {
-        GlyphCache probe;
-        ASSERT_TRUE(probe.get(f.rasterizer, f.gid(U'o'), o));
-        one = probe.stats().bytes;
-    }
+    const std::size_t one = entry_bytes(f, U'o', o);
+    ASSERT_GT(one, 0u);
     GlyphCache cache(2 * one + one / 2);
     const std::u32string frame = U"Hamburgefonstiv";
     ASSERT_TRUE(cache.begin_batch());

@@ -60,17 +60,6 @@ PixelBox pixel_box(const Rect& box, int w, int h) {
     return b;
 }
 
-template <typename View>
-Status check_combine_target(const View& t) {
-    if (t.width < 0 || t.height < 0 || t.width > kMaxBitmapDim || t.height > kMaxBitmapDim)
-        return Error{"raster target " + std::to_string(t.width) + "x" + std::to_string(t.height) +
-                     " is outside 0.." + std::to_string(kMaxBitmapDim) + " px a side"};
-    if (t.data == nullptr && t.width > 0 && t.height > 0)
-        return Error{"raster target " + std::to_string(t.width) + "x" + std::to_string(t.height) +
-                     " has no pixel memory (null data)"};
-    return ok_status();
-}
-
 // `fill(sub, dx, dy)` draws the fill, moved by (dx, dy) px, into `sub` (Replace); then `sub` is
 // combined into `target` at the box. `cells` is how many elements one display pixel takes.
 template <typename View, typename T, typename Fill>
@@ -111,7 +100,7 @@ Affine moved(Affine m, double dx, double dy) {
 
 Status Rasterizer::fill_combined(const Polylines& lines, const MaskView& target,
                                  const FillOptions& options) {
-    if (Status st = check_combine_target(target); !st) return st;
+    if (Status st = raster_detail::check_target(target); !st) return st;
     if (!options.origin.is_finite()) return Error{"raster origin is not finite (NaN or infinity)"};
     const PixelBox b = pixel_box(points_box(lines, options.origin), target.width, target.height);
     return combine_into(target, b, 1, features().combine_bytes, options.combine,
@@ -123,7 +112,7 @@ Status Rasterizer::fill_combined(const Polylines& lines, const MaskView& target,
 
 Status Rasterizer::fill_combined(const Polylines& lines, const FloatMaskView& target,
                                  const FillOptions& options) {
-    if (Status st = check_combine_target(target); !st) return st;
+    if (Status st = raster_detail::check_target(target); !st) return st;
     if (!options.origin.is_finite()) return Error{"raster origin is not finite (NaN or infinity)"};
     const PixelBox b = pixel_box(points_box(lines, options.origin), target.width, target.height);
     return combine_into(target, b, 1, features().combine_floats, options.combine,
@@ -135,7 +124,7 @@ Status Rasterizer::fill_combined(const Polylines& lines, const FloatMaskView& ta
 
 Status Rasterizer::fill_path_combined(const Path& path, const Affine& transform,
                                       const MaskView& target, const FillOptions& options) {
-    if (Status st = check_combine_target(target); !st) return st;
+    if (Status st = raster_detail::check_target(target); !st) return st;
     const bool lcd = options.format == CoverageFormat::Lcd;
     if (lcd && target.width % 3 != 0)
         return Error{"LCD target width " + std::to_string(target.width) +
@@ -153,7 +142,7 @@ Status Rasterizer::fill_path_combined(const Path& path, const Affine& transform,
 
 Status Rasterizer::fill_path_combined(const Path& path, const Affine& transform,
                                       const FloatMaskView& target, const FillOptions& options) {
-    if (Status st = check_combine_target(target); !st) return st;
+    if (Status st = raster_detail::check_target(target); !st) return st;
     const PixelBox b = pixel_box(control_box(path, transform), target.width, target.height);
     return combine_into(target, b, 1, features().combine_floats, options.combine,
                         [&](const FloatMaskView& sub, double dx, double dy) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "bezel/raster.hpp"
@@ -13,6 +14,19 @@
 #include "raster/sweep.hpp"
 
 namespace bezel::raster_detail {
+
+// A target every fill accepts: within kMaxBitmapDim a side, with memory when not empty. The
+// error names the size.
+template <typename View>
+Status check_target(const View& t) {
+    if (t.width < 0 || t.height < 0 || t.width > kMaxBitmapDim || t.height > kMaxBitmapDim)
+        return Error{"raster target " + std::to_string(t.width) + "x" + std::to_string(t.height) +
+                     " is outside 0.." + std::to_string(kMaxBitmapDim) + " px a side"};
+    if (t.data == nullptr && t.width > 0 && t.height > 0)
+        return Error{"raster target " + std::to_string(t.width) + "x" + std::to_string(t.height) +
+                     " has no pixel memory (null data)"};
+    return ok_status();
+}
 
 // Integer pixel range [lo, hi) of [a, b] + offset clamped to [0, n]. Computed in double: a
 // coordinate of 1e300 clamps before any conversion to int.

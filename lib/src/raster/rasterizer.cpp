@@ -26,17 +26,6 @@ namespace rd = raster_detail;
 
 namespace {
 
-template <typename View>
-Status check_target(const View& t) {
-    if (t.width < 0 || t.height < 0 || t.width > kMaxBitmapDim || t.height > kMaxBitmapDim)
-        return Error{"raster target " + std::to_string(t.width) + "x" + std::to_string(t.height) +
-                     " is outside 0.." + std::to_string(kMaxBitmapDim) + " px a side"};
-    if (t.data == nullptr && t.width > 0 && t.height > 0)
-        return Error{"raster target " + std::to_string(t.width) + "x" + std::to_string(t.height) +
-                     " has no pixel memory (null data)"};
-    return ok_status();
-}
-
 Status check_polylines(const Polylines& lines) {
     if (lines.points.size() > kMaxEdges)
         return Error{"polylines have " + std::to_string(lines.points.size()) +
@@ -111,7 +100,7 @@ void draw_band(const Polylines& lines, Vec2 origin, int bx, int by, const rd::Ba
 template <typename View>
 Status Rasterizer::fill_impl(const Polylines& lines, FillRule rule, const View& target,
                              Vec2 origin) {
-    if (Status s = check_target(target); !s) return s;
+    if (Status s = rd::check_target(target); !s) return s;
     if (Status s = check_polylines(lines); !s) return s;
     if (!origin.is_finite()) return Error{"raster origin is not finite (NaN or infinity)"};
     const Bounds b = bounds_of(lines.points);
