@@ -1,6 +1,8 @@
 // fuzz_font — font bytes → Font::open → metrics, cmap, names, variation axes → outlines of a few
-// glyphs at several sizes, hinted and not → bezel's Rasterizer. Font opens files only, so each
-// input is written to one per-process file in /dev/shm (or $TMPDIR). Properties: no crash or
+// glyphs at several sizes, hinted and not → bezel's Rasterizer. Each input is written to one
+// per-process file in /dev/shm (or $TMPDIR) and opened as users open fonts: Font::open(file)
+// maps it through FontFace::open, whose bytes reach FreeType as a memory font would
+// (FT_New_Memory_Face), so the file route covers the memory one too. Properties: no crash or
 // sanitizer report; every outline bezel returns is finite and its raw points agree with its
 // contour ends; rasterizing it succeeds or fails with a message.
 #include <cmath>
