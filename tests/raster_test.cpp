@@ -14,12 +14,14 @@
 #include <random>
 #include <vector>
 
+#include "bezel/diagnostics.hpp"
 #include "bezel/raster.hpp"
 #include "raster/accumulate.hpp"
 #include "raster/dense_batch.hpp"
 #include "raster/direct_fill.hpp"
 #include "raster/draw_batch.hpp"
 #include "raster/fill_common.hpp"
+#include "raster/kernels.hpp"
 #include "raster/reference.hpp"
 #include "raster/render_flatten.hpp"
 #include "raster/sweep.hpp"
@@ -1079,6 +1081,33 @@ TEST(RasterKernels, EdgesStartingJustAboveRowZeroKeepEveryRowBalanced) {
             }
         }
     }
+}
+
+TEST(RasterKernels, OneTableIsChosenAndItIsAvx2ExactlyWhenEveryAvx2KernelExists) {
+    // Fills take every run-time kernel from kernel_table(): the AVX2 table holds all four AVX2
+    // kernels or does not exist, the baseline table holds the SSE2 sweep and no other kernel, and
+    // the public diagnostics name the chosen one.
+    using namespace raster_detail;
+    const KernelTable& base = baseline_table();
+    EXPECT_STREQ(base.name, "sse2");
+    EXPECT_EQ(base.sweep, &sse2_kernels());
+    EXPECT_EQ(base.steep, nullptr);
+    EXPECT_EQ(base.batch, nullptr);
+    EXPECT_EQ(base.translated_box, nullptr);
+    const KernelTable* avx2 = avx2_table();
+    const bool has_avx2 = avx2_kernels() != nullptr;
+    EXPECT_EQ(avx2_steep_kernels() != nullptr, has_avx2);
+    EXPECT_EQ(avx2_batch_kernels() != nullptr, has_avx2);
+    EXPECT_EQ(avx2_translated_box() != nullptr, has_avx2);
+    ASSERT_EQ(avx2 != nullptr, has_avx2);
+    if (avx2 != nullptr) {
+        EXPECT_EQ(avx2->sweep, avx2_kernels());
+        EXPECT_EQ(avx2->steep, avx2_steep_kernels());
+        EXPECT_EQ(avx2->batch, avx2_batch_kernels());
+        EXPECT_EQ(avx2->translated_box, avx2_translated_box());
+    }
+    EXPECT_EQ(&kernel_table(), has_avx2 ? avx2 : &base);
+    EXPECT_STREQ(raster_kernel_name(), kernel_table().name);
 }
 
 TEST(RasterKernels, Avx2TranslatedBoxIsTheMinMaxOfTheMovedPointsAndFlagsNaN) {

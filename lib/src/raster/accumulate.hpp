@@ -48,7 +48,8 @@ struct SteepKernels {
     SteepRowsFn steep[2];  // indexed by kMark
     StemRowsFn stems[2];
 };
-// Null when the CPU (or the build) has no AVX2 (draw_avx2.cpp); decided once.
+// Null when the CPU (or the build) has no AVX2 (draw_avx2.cpp); kernel_table() (kernels.hpp)
+// says whether fills use them.
 const SteepKernels* avx2_steep_kernels();
 
 struct Band {
@@ -57,7 +58,7 @@ struct Band {
     std::ptrdiff_t stride;       // floats per group, group_cells(width)
     std::ptrdiff_t flag_stride;  // bytes per group, row_flag_bytes(width)
     int width, rows;
-    const SteepKernels* steep;   // avx2_steep_kernels(), or null: every row drawn one by one
+    const SteepKernels* steep;   // kernel_table().steep, or null: every row drawn one by one
 };
 
 // Cell 0 of row j (cell i is at [i · kGroupRows]) and the flag row of j's group.

@@ -10,6 +10,7 @@
 #include "raster/dense_batch.hpp"
 #include "raster/draw_batch.hpp"
 #include "raster/fill_common.hpp"
+#include "raster/kernels.hpp"
 #include "raster/render_flatten.hpp"
 
 namespace bezel::raster_detail {
@@ -119,7 +120,7 @@ struct DrawSink {
 
 // `points` are the transformed control points, or with kTranslate the path's own, which the
 // transform moves by `offset`; `shift` is the band's top-left pixel, `four` the AVX2 batch
-// kernels (avx2_batch_kernels(), or null). With kTranslate a point is (p + offset) − shift,
+// kernels (kernel_table().batch, or null). With kTranslate a point is (p + offset) − shift,
 // the value the stored transform gives (1·x + 0·y + e = x + e exactly), so both produce the
 // same polyline bit for bit.
 template <bool kMark, bool kSplit, bool kTranslate>
@@ -213,7 +214,8 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     // tp only grows (a resize per fill was a call, and zeroed what the transform overwrites).
     const bool fits = tp.size() >= src.size();
     __m128d lo, hi, nan;
-    static const TranslatedBoxFn box = avx2_translated_box();
+    const KernelTable& kernels = kernel_table();
+    const TranslatedBoxFn box = kernels.translated_box;
     if (translate && box != nullptr)
         box(src.data(), src.size(), _mm_set_pd(m.f, m.e), lo, hi, nan);
     else if (translate)
@@ -268,9 +270,8 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     const V2 offset{_mm_set_pd(m.f, m.e)};
     const Point* const points = translate ? src.data() : tp.data();
     const Band band{acc, scratch.flags.data(), stride, flag_stride, box_w, box_h,
-                    avx2_steep_kernels()};
-    const SweepKernels& kernels = best_kernels();
-    const BatchKernels* const four = avx2_batch_kernels();
+                    kernels.steep};
+    const BatchKernels* const four = kernels.batch;
     // draw_path for a band mode, with the point source (stored or translated) chosen here.
     const auto draw = [&](auto mark, auto split) {
         constexpr bool kMark = decltype(mark)::value, kSplit = decltype(split)::value;
@@ -284,12 +285,12 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
         // the float batch cuts a whole step's lanes at once, so cutting pays in small boxes too
         // (unlike draw_batch.hpp's double pair loop, which cuts only from 32 rows).
         draw(std::false_type{}, std::true_type{});
-        sweep_dense(kernels, rule, acc, stride, box_w, box_h, target.row(by0) + bx0,
+        sweep_dense(*kernels.sweep, rule, acc, stride, box_w, box_h, target.row(by0) + bx0,
                     target.stride);
         return true;
     }
     draw(std::true_type{}, std::false_type{});
-    sweep_marked_band(kernels, rule, band, target.row(by0) + bx0, target.stride);
+    sweep_marked_band(*kernels.sweep, rule, band, target.row(by0) + bx0, target.stride);
     return true;
 }
 

@@ -46,7 +46,7 @@ struct DirectScratch {
 // The direct route's first pass for a translation (the identity included): the same IEEE
 // additions as its baseline loop, and min, max and or are exact, so the results are the same.
 // AVX2, two points a vector: half the baseline loop's instructions. Null when the CPU (or the
-// build) has no AVX2; decided once.
+// build) has no AVX2 (kernel_table(), kernels.hpp, picks it).
 using TranslatedBoxFn = void (*)(const Point* p, std::size_t n, __m128d ef, __m128d& lo,
                                  __m128d& hi, __m128d& nan);
 TranslatedBoxFn avx2_translated_box();

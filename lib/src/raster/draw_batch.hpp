@@ -104,7 +104,8 @@ struct BatchKernels {
     BatchFn dense;      // draw_dense_batch (dense_batch.hpp), eight float segments a step
     BatchFn marked[2];  // draw_batch for marked (sparse) bands, four a step; [kSplit]
 };
-// Null when the CPU (or the build) has no AVX2; decided once.
+// Null when the CPU (or the build) has no AVX2; kernel_table() (kernels.hpp) says whether
+// fills use them.
 const BatchKernels* avx2_batch_kernels();
 
 // Draws segments [0, n) of `b` into `band` (draw_line's preconditions for each; an odd batch

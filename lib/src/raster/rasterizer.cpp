@@ -17,6 +17,7 @@
 #include "bezel/raster.hpp"
 #include "raster/accumulate.hpp"
 #include "raster/fill_common.hpp"
+#include "raster/kernels.hpp"
 #include "raster/overlap.hpp"
 #include "raster/sweep.hpp"
 
@@ -135,13 +136,13 @@ Status Rasterizer::fill_impl(const Polylines& lines, FillRule rule, const View& 
     float* const acc = rd::band_cells(acc_, cells);
     if (flags_.size() < flags) flags_.resize(flags, 0);
 
-    const rd::SweepKernels& kernels = rd::best_kernels();
+    const rd::KernelTable& kernels = rd::kernel_table();
     for (int y = by0; y < by1; y += band_rows) {
         const int rows = std::min(band_rows, by1 - y);
         const rd::Band band{acc, flags_.data(), stride, flag_stride, box_w, rows,
-                            rd::avx2_steep_kernels()};
+                            kernels.steep};
         draw_band(lines, origin, bx0, y, band);
-        rd::sweep_marked_band(kernels, rule, band, target.row(y) + bx0, target.stride);
+        rd::sweep_marked_band(*kernels.sweep, rule, band, target.row(y) + bx0, target.stride);
     }
     return ok_status();
 }

@@ -189,9 +189,4 @@ const SweepKernels& sse2_kernels() {
     return k;
 }
 
-const SweepKernels& best_kernels() {
-    static const SweepKernels& k = avx2_kernels() ? *avx2_kernels() : sse2_kernels();
-    return k;
-}
-
 }  // namespace bezel::raster_detail

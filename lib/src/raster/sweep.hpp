@@ -90,8 +90,7 @@ const SweepKernels& scalar_kernels();
 const SweepKernels& sse2_kernels();
 // Null when the CPU (or the build) has no AVX2.
 const SweepKernels* avx2_kernels();
-// The fastest kernels this CPU supports, decided once.
-const SweepKernels& best_kernels();
+// Which of them fills use is kernel_table()'s choice (kernels.hpp).
 
 // Scalar f(a) for both rules.
 inline float coverage_of(float a, FillRule rule) {
