@@ -1084,7 +1084,7 @@ TEST(RasterKernels, EdgesStartingJustAboveRowZeroKeepEveryRowBalanced) {
 }
 
 TEST(RasterKernels, OneTableIsChosenAndItIsAvx2ExactlyWhenEveryAvx2KernelExists) {
-    // Fills take every run-time kernel from kernel_table(): the AVX2 table holds all four AVX2
+    // Fills take every run-time kernel from kernel_table(): the AVX2 table holds all three AVX2
     // kernels or does not exist, the baseline table holds the SSE2 sweep and no other kernel, and
     // the public diagnostics name the chosen one.
     using namespace raster_detail;
@@ -1093,75 +1093,18 @@ TEST(RasterKernels, OneTableIsChosenAndItIsAvx2ExactlyWhenEveryAvx2KernelExists)
     EXPECT_EQ(base.sweep, &sse2_kernels());
     EXPECT_EQ(base.steep, nullptr);
     EXPECT_EQ(base.batch, nullptr);
-    EXPECT_EQ(base.translated_box, nullptr);
     const KernelTable* avx2 = avx2_table();
     const bool has_avx2 = avx2_kernels() != nullptr;
     EXPECT_EQ(avx2_steep_kernels() != nullptr, has_avx2);
     EXPECT_EQ(avx2_batch_kernels() != nullptr, has_avx2);
-    EXPECT_EQ(avx2_translated_box() != nullptr, has_avx2);
     ASSERT_EQ(avx2 != nullptr, has_avx2);
     if (avx2 != nullptr) {
         EXPECT_EQ(avx2->sweep, avx2_kernels());
         EXPECT_EQ(avx2->steep, avx2_steep_kernels());
         EXPECT_EQ(avx2->batch, avx2_batch_kernels());
-        EXPECT_EQ(avx2->translated_box, avx2_translated_box());
     }
     EXPECT_EQ(&kernel_table(), has_avx2 ? avx2 : &base);
     EXPECT_STREQ(raster_kernel_name(), kernel_table().name);
-}
-
-TEST(RasterKernels, Avx2TranslatedBoxIsTheMinMaxOfTheMovedPointsAndFlagsNaN) {
-    // The direct route boxes a translated path's points with the AVX2 loop when the CPU has it
-    // (direct_fill.hpp). Against a scalar loop over p + ef: lo and hi equal bit for bit when no
-    // sum is NaN, and the NaN lanes flagged exactly, for every count 0-40 (the four-, two- and
-    // one-point tails) and for points with infinities, NaN and huge values.
-    using namespace raster_detail;
-    const TranslatedBoxFn box = avx2_translated_box();
-    if (box == nullptr) GTEST_SKIP() << "no AVX2 on this CPU";
-    std::mt19937 rng(31337);
-    std::uniform_real_distribution<double> u(-1e4, 1e4), pick(0.0, 1.0);
-    const double inf = std::numeric_limits<double>::infinity();
-    const double nanv = std::numeric_limits<double>::quiet_NaN();
-    int with_nan = 0, finite = 0;
-    for (int trial = 0; trial < 2000; ++trial) {
-        const std::size_t n = static_cast<std::size_t>(trial % 41);
-        std::vector<Point> pts(n);
-        const bool hostile = trial % 5 == 0;
-        for (Point& p : pts) {
-            p = {u(rng), u(rng)};
-            if (hostile && pick(rng) < 0.1) p.x = pick(rng) < 0.5 ? nanv : -inf;
-            if (hostile && pick(rng) < 0.1) p.y = pick(rng) < 0.5 ? nanv : 1e308;
-        }
-        const double e = u(rng), f = u(rng);
-        double lx = inf, ly = inf, hx = -inf, hy = -inf;
-        bool nx = false, ny = false;
-        for (const Point& p : pts) {
-            const double x = p.x + e, y = p.y + f;
-            nx = nx || std::isnan(x);
-            ny = ny || std::isnan(y);
-            lx = std::min(lx, x);
-            ly = std::min(ly, y);
-            hx = std::max(hx, x);
-            hy = std::max(hy, y);
-        }
-        __m128d lo, hi, nan;
-        box(pts.data(), n, _mm_set_pd(f, e), lo, hi, nan);
-        double l[2], h[2];
-        _mm_storeu_pd(l, lo);
-        _mm_storeu_pd(h, hi);
-        ASSERT_EQ(_mm_movemask_pd(nan), (nx ? 1 : 0) | (ny ? 2 : 0)) << "trial " << trial;
-        if (nx || ny) {
-            ++with_nan;
-            continue;
-        }
-        ++finite;
-        EXPECT_EQ(l[0], lx) << "trial " << trial << ", " << n << " points";
-        EXPECT_EQ(l[1], ly) << "trial " << trial;
-        EXPECT_EQ(h[0], hx) << "trial " << trial;
-        EXPECT_EQ(h[1], hy) << "trial " << trial;
-    }
-    EXPECT_GT(with_nan, 50);
-    EXPECT_GT(finite, 1000);
 }
 
 TEST(RasterKernels, WangStepCountIsTheCeilingOfWangsFormula) {

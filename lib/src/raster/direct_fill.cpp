@@ -214,11 +214,7 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     // tp only grows (a resize per fill was a call, and zeroed what the transform overwrites).
     const bool fits = tp.size() >= src.size();
     __m128d lo, hi, nan;
-    const KernelTable& kernels = kernel_table();
-    const TranslatedBoxFn box = kernels.translated_box;
-    if (translate && box != nullptr)
-        box(src.data(), src.size(), _mm_set_pd(m.f, m.e), lo, hi, nan);
-    else if (translate)
+    if (translate)
         transform_points<false, true>(src, m, nullptr, lo, hi, nan);
     else if (fits)
         transform_points<true>(src, m, tp.data(), lo, hi, nan);
@@ -269,6 +265,7 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     const V2 shift{_mm_set_pd(static_cast<double>(by0), static_cast<double>(bx0))};
     const V2 offset{_mm_set_pd(m.f, m.e)};
     const Point* const points = translate ? src.data() : tp.data();
+    const KernelTable& kernels = kernel_table();
     const Band band{acc, scratch.flags.data(), stride, flag_stride, box_w, box_h,
                     kernels.steep};
     const BatchKernels* const four = kernels.batch;

@@ -41,16 +41,6 @@ struct DirectScratch {
     std::vector<Point>& points;         // the transformed control points
 };
 
-// The box of the points p[0, n) moved by ef = (e, f): lo and hi the lane-wise min and max of
-// p + ef, and nan all ones in a lane where one of them was NaN (the box is then of no meaning).
-// The direct route's first pass for a translation (the identity included): the same IEEE
-// additions as its baseline loop, and min, max and or are exact, so the results are the same.
-// AVX2, two points a vector: half the baseline loop's instructions. Null when the CPU (or the
-// build) has no AVX2 (kernel_table(), kernels.hpp, picks it).
-using TranslatedBoxFn = void (*)(const Point* p, std::size_t n, __m128d ef, __m128d& lo,
-                                 __m128d& hi, __m128d& nan);
-TranslatedBoxFn avx2_translated_box();
-
 // Fills `path` mapped by `m` into `target` when the direct route applies (see above) and
 // returns true; returns false, touching nothing but scratch capacity, otherwise. `tol` is the
 // flattening tolerance (> 0, finite); `m` is finite.

@@ -1,8 +1,8 @@
 // Private: the one run-time choice of the rasterizer's kernels.
 //
 // The pipeline is the same on every CPU (docs/rasterizer.md, "How fill_path renders a glyph");
-// only the kernels of four steps have an AVX2 form: the box of a translated path, the segment
-// batches, the full rows of long steep edges and stems, and the sweep. Their baseline forms
+// only the kernels of three steps have an AVX2 form: the segment batches, the full rows of long
+// steep edges and stems, and the sweep. Their baseline forms
 // (x86-64's SSE2, or SIMDe's translation of it elsewhere) run everywhere. The table is chosen
 // once, the first time a fill asks: the AVX2 table when the CPU has AVX2, else the baseline.
 // Each AVX2 kernel is tested against its baseline form (bit for bit where the baseline is the
@@ -11,7 +11,6 @@
 #pragma once
 
 #include "raster/accumulate.hpp"
-#include "raster/direct_fill.hpp"
 #include "raster/draw_batch.hpp"
 #include "raster/sweep.hpp"
 
@@ -22,7 +21,6 @@ struct KernelTable {
     const SweepKernels* sweep;        // never null
     const SteepKernels* steep;        // null: long steep edges drawn row by row
     const BatchKernels* batch;        // null: the baseline batch loops (draw_batch.hpp)
-    TranslatedBoxFn translated_box;   // null: the baseline box loop (direct_fill.cpp)
 };
 
 // The baseline table: SSE2 sweeps, every other kernel null.
