@@ -11,6 +11,7 @@
 #include "raster/direct_fill.hpp"
 #include "raster/overlap.hpp"
 #include "raster/render_flatten.hpp"
+#include "raster/segment_budget.hpp"
 
 namespace bezel {
 
@@ -39,15 +40,22 @@ double wang_segments(const Point* p, int degree, const Affine& m, double tol) {
     return std::isnan(n) ? 1.0 : n;
 }
 
-// Estimated segments of the flattened path, saturating: the caller only compares with kMaxEdges.
+}  // namespace
+
+namespace raster_detail {
+
 double estimate_segments(const Path& path, const Affine& m, double tol) {
+    Rect box = Rect::empty();
+    for (const Point& p : path.points()) box = box.union_with(p);
+    return estimate_segments_in_box(path, box, m, tol);
+}
+
+double estimate_segments_in_box(const Path& path, const Rect& box, const Affine& m, double tol) {
     const std::vector<Point>& pts = path.points();
     // Cheap bound first. Every control point lies in the control box, of diagonal D after the
     // transform, so each second difference is ≤ 2D (two steps each ≤ D), and a cubic — the worse
     // degree — needs at most ⌈√(6·2D / (8·tol))⌉ = ⌈√(1.5·D/tol)⌉ steps. If even every verb at
     // that count fits, skip the per-curve pass (always, for glyphs).
-    Rect box = Rect::empty();
-    for (const Point& p : pts) box = box.union_with(p);
     if (!pts.empty()) {
         Rect tb = Rect::empty();
         for (Point c : {Point{box.x0, box.y0}, Point{box.x1, box.y0}, Point{box.x0, box.y1},
@@ -80,7 +88,7 @@ double estimate_segments(const Path& path, const Affine& m, double tol) {
     return total;
 }
 
-}  // namespace
+}  // namespace raster_detail
 
 template <typename View>
 Status Rasterizer::fill_path_impl(const Path& path, const Affine& transform, FillRule rule,
@@ -94,7 +102,16 @@ Status Rasterizer::fill_path_impl(const Path& path, const Affine& transform, Fil
     if (balanced && raster_detail::fill_path_direct(path, transform, rule, target, tol,
                                                     {acc_, flags_, flattened_.points}))
         return ok_status();
-    const double estimate = estimate_segments(path, transform, tol);
+    return fill_path_general(path, transform, rule, target, options);
+}
+
+template <typename View>
+Status Rasterizer::fill_path_general(const Path& path, const Affine& transform, FillRule rule,
+                                     const View& target, const FlattenOptions& options) {
+    const double tol = std::max(options.tolerance_px, kMinFlattenTolerancePx);
+    const bool balanced = options.method == FlattenMethod::WangUniform &&
+                          options.tolerance_px > 0.0 && std::isfinite(options.tolerance_px);
+    const double estimate = raster_detail::estimate_segments(path, transform, tol);
     if (!(estimate <= static_cast<double>(kMaxEdges)))
         return Error{"fill_path: path would flatten to about " +
                      (std::isfinite(estimate) ? std::to_string(static_cast<long long>(estimate))
@@ -127,6 +144,10 @@ Status Rasterizer::fill_path_gray(const Path& path, const Affine& transform, con
                                      features().overlap);
     return ok_status();
 }
+
+// fill_set.cpp fills the jobs the direct route refuses through this.
+template Status Rasterizer::fill_path_general<MaskView>(const Path&, const Affine&, FillRule,
+                                                        const MaskView&, const FlattenOptions&);
 
 // lcd.cpp samples through these, combine.cpp fills its scratch through them.
 template Status Rasterizer::fill_path_gray<FloatMaskView>(const Path&, const Affine&,
