@@ -1429,8 +1429,9 @@ TEST(RasterSet, AtlasJobsFillTheirRectanglesAndLeaveTheGapsAlone) {
 
 TEST(RasterSet, InvalidJobIsNamedAndNoTargetIsTouched) {
     // Job 2 of four is bad in each way fill_path would refuse; the error names it, says what is
-    // wrong, reports its index, and leaves all four targets (the valid ones before it
-    // included) as they were: the validation pass runs before any fill.
+    // wrong and reports its index. A bad job (null path, target, transform, origin) is found by
+    // the validation pass: all four targets stay as they were. A bad path is found when its job
+    // is reached: jobs 0 and 1 are written (fill_path's bytes), 2 and 3 are not.
     const double nan = std::numeric_limits<double>::quiet_NaN();
     Path good;
     good.move_to({1, 1});
@@ -1439,7 +1440,7 @@ TEST(RasterSet, InvalidJobIsNamedAndNoTargetIsTouched) {
     Path bad_point = good;
     bad_point.line_to({nan, 3});
     bad_point.close();
-    Path beyond_budget;   // a curve that would flatten to far more than kMaxEdges segments
+    Path beyond_budget;   // curves that would flatten to far more than kMaxEdges segments
     beyond_budget.move_to({0, 0});
     for (int i = 0; i < 200; ++i) beyond_budget.cubic_to({1e9, 0}, {1e9, 1e9}, {0, 1e9});
     beyond_budget.close();
@@ -1447,20 +1448,25 @@ TEST(RasterSet, InvalidJobIsNamedAndNoTargetIsTouched) {
         const char* what;
         std::function<void(FillJob&)> spoil;
         const char* message;
+        bool in_path;   // found when the job is reached, not by the validation pass
     };
     const std::vector<Bad> cases{
-        {"null path", [](FillJob& j) { j.path = nullptr; }, "path is null"},
-        {"negative target", [](FillJob& j) { j.target.width = -3; }, "is outside 0.."},
-        {"null target memory", [](FillJob& j) { j.target.data = nullptr; }, "null data"},
-        {"NaN transform", [&](FillJob& j) { j.transform.c = nan; }, "transform is not finite"},
+        {"null path", [](FillJob& j) { j.path = nullptr; }, "path is null", false},
+        {"negative target", [](FillJob& j) { j.target.width = -3; }, "is outside 0..", false},
+        {"null target memory", [](FillJob& j) { j.target.data = nullptr; }, "null data", false},
+        {"NaN transform", [&](FillJob& j) { j.transform.c = nan; }, "transform is not finite",
+         false},
         {"infinite origin",
          [](FillJob& j) { j.origin.x = std::numeric_limits<double>::infinity(); },
-         "origin is not finite"},
-        {"NaN point", [&](FillJob& j) { j.path = &bad_point; }, "is not finite after"},
-        {"huge point", [](FillJob& j) { j.transform = Affine::scale(1e300); },
-         "beyond 2^50 px"},
-        {"edge budget", [&](FillJob& j) { j.path = &beyond_budget; }, "segments, more than"},
+         "origin is not finite", false},
+        {"NaN point", [&](FillJob& j) { j.path = &bad_point; }, "is not finite after", true},
+        {"huge point", [](FillJob& j) { j.transform = Affine::scale(1e300); }, "beyond 2^50 px",
+         true},
+        {"edge budget", [&](FillJob& j) { j.path = &beyond_budget; }, "segments at tolerance",
+         true},
     };
+    Mask filled(10, 9);
+    ASSERT_TRUE(Rasterizer().fill_path(good, Affine::identity(), filled.view()).ok());
     for (const Bad& b : cases) {
         std::vector<Mask> targets(4, Mask(10, 9, 0xAB));
         std::vector<FillJob> jobs;
@@ -1475,9 +1481,12 @@ TEST(RasterSet, InvalidJobIsNamedAndNoTargetIsTouched) {
         EXPECT_NE(s.error().message.find(b.message), std::string::npos)
             << b.what << ": " << s.error().message;
         EXPECT_EQ(failed, 2u) << b.what;
-        for (std::size_t k = 0; k < targets.size(); ++k)
-            EXPECT_EQ(targets[k].pixels(), std::vector<std::uint8_t>(90, 0xAB))
-                << b.what << ": target " << k << " was written";
+        for (std::size_t k = 0; k < targets.size(); ++k) {
+            const bool written = b.in_path && k < 2;
+            EXPECT_EQ(targets[k].pixels(),
+                      written ? filled.pixels() : std::vector<std::uint8_t>(90, 0xAB))
+                << b.what << ": target " << k;
+        }
     }
     // A fault of the set itself: its index is the job count.
     Mask t(4, 4, 0xAB);

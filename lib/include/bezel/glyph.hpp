@@ -216,8 +216,9 @@ public:
     // draw_set: each job's bytes are exactly those of draw(*job.glyph, job.target) (tested);
     // jobs whose targets overlap are drawn in order. Errors name the set index and the glyph:
     // a null glyph or a target smaller than the box (draw()'s), found for every job before any
-    // target is written; then the Rasterizer's (fill_paths', which also checks every job of a
-    // run before writing any) and the Painter's, the jobs before the one named then drawn.
+    // target is written; then the Rasterizer's (fill_paths') and the Painter's, found when the
+    // job is reached, the jobs before it drawn (a glyph from prepare() has finite points within
+    // the limits, so the Rasterizer has nothing to refuse in it).
     // Allocates nothing for outline glyphs once its scratch has grown to the largest set.
     Status draw_set(const GlyphDrawJob* jobs, std::size_t count);
     Status draw_set(const std::vector<GlyphDrawJob>& jobs) {

@@ -1,18 +1,18 @@
 // Rasterizer::fill_paths: a set of fills in one call (raster.hpp states the contract).
 //
-// Two passes. The validation pass checks every job with the checks fill_path would make, so an
-// invalid job is reported before any target is written. The fill pass then runs each job
-// through the route fill_path would take, with what fill_path decides per call decided once for
-// the set: the options (origin, format, overlap, combine, flattening method and tolerance) are
-// dispatched once, and the job's transform and origin are not checked again.
+// Two passes. The validation pass checks what each job brings besides its path (the path
+// pointer, the target, the transform and origin) before any target is written. The fill pass
+// runs each job through the route fill_path would take, with what fill_path decides per call
+// decided once for the set: the options (origin, format, overlap, combine, flattening method
+// and tolerance) are dispatched once, and the job's transform and origin are not checked again.
 //
-// Why the validation pass costs little: it needs each path's control box (its untransformed
-// points' min and max, one pass of packed min / max over the points) and the four corners of that
-// box under the job's mapping. An affine map is monotone in each coordinate (each product and sum
-// rounds monotonically: -ffp-contract=off keeps them unfused and alike everywhere), so every
-// mapped point lies within the mapped corners' extremes: the corners being finite and within
-// kMaxFlattenCoordinatePx proves every point is, which is the flattener's check. The same box
-// gives the edge budget's cheap bound (segment_budget.hpp), the one glyphs always meet.
+// The path's own points are not checked in the validation pass: proving them finite and within
+// kMaxFlattenCoordinatePx takes a pass over every point (about 9 instructions a point, some 550
+// a 12 px glyph: 8 % of the set's time, docs/perf-log.md), and the fill already makes that
+// proof as it goes (the direct route's box pass refuses a path it does not hold, the general
+// route reports it before writing). So a bad path stops the set at its job, the jobs before it
+// written.
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -20,8 +20,6 @@
 #include "bezel/raster.hpp"
 #include "raster/direct_fill.hpp"
 #include "raster/fill_common.hpp"
-#include "raster/segment_budget.hpp"
-#include "raster/sse2.hpp"
 
 namespace bezel {
 
@@ -33,62 +31,8 @@ constexpr int kLcdSampleReach = 2;
 
 std::string job_label(std::size_t k) { return "fill_paths: job " + std::to_string(k) + ": "; }
 
-bool in_range(Point p) {
-    // Written so NaN fails too.
-    return std::fabs(p.x) <= kMaxFlattenCoordinatePx && std::fabs(p.y) <= kMaxFlattenCoordinatePx;
-}
-
-// The control box of `pts` (Rect::union_with's values: min and max are exact), and whether every
-// coordinate is finite. Packed: one point a vector, two vectors a step for two independent chains.
-Rect control_box(const std::vector<Point>& pts, bool& finite) {
-    __m128d lo0 = _mm_set1_pd(HUGE_VAL), lo1 = lo0, hi0 = _mm_set1_pd(-HUGE_VAL), hi1 = hi0;
-    // x − x is 0 for finite x and NaN for NaN or ±inf, so one unordered test at the end checks
-    // every coordinate without a branch in the loop.
-    __m128d poison0 = _mm_setzero_pd(), poison1 = poison0;
-    const std::size_t n = pts.size();
-    std::size_t i = 0;
-    for (; i + 1 < n; i += 2) {
-        const __m128d p0 = _mm_loadu_pd(&pts[i].x), p1 = _mm_loadu_pd(&pts[i + 1].x);
-        lo0 = _mm_min_pd(lo0, p0);
-        lo1 = _mm_min_pd(lo1, p1);
-        hi0 = _mm_max_pd(hi0, p0);
-        hi1 = _mm_max_pd(hi1, p1);
-        poison0 = _mm_add_pd(poison0, _mm_sub_pd(p0, p0));
-        poison1 = _mm_add_pd(poison1, _mm_sub_pd(p1, p1));
-    }
-    if (i < n) {
-        const __m128d p = _mm_loadu_pd(&pts[i].x);
-        lo0 = _mm_min_pd(lo0, p);
-        hi0 = _mm_max_pd(hi0, p);
-        poison0 = _mm_add_pd(poison0, _mm_sub_pd(p, p));
-    }
-    const __m128d lo = _mm_min_pd(lo0, lo1), hi = _mm_max_pd(hi0, hi1);
-    const __m128d poison = _mm_add_pd(poison0, poison1);
-    finite = _mm_movemask_pd(_mm_cmpunord_pd(poison, poison)) == 0;
-    alignas(16) double l[2], h[2];
-    _mm_store_pd(l, lo);
-    _mm_store_pd(h, hi);
-    return {l[0], l[1], h[0], h[1]};
-}
-
-// fill_path's message for the first point of `path` that `m` maps out of range (the flattener's
-// words), found only once the box has shown there is one.
-std::string bad_point(const Path& path, const Affine& m) {
-    const std::vector<Point>& pts = path.points();
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-        const Point p = m * pts[i];
-        if (in_range(p)) continue;
-        return "path point " + std::to_string(i) +
-               (std::isfinite(p.x) && std::isfinite(p.y)
-                    ? " is beyond 2^50 px from the origin after the transform"
-                    : " is not finite after the transform");
-    }
-    return "a path point is not finite or beyond 2^50 px after the transform";
-}
-
-// What fill_path would refuse in job `job` before writing its target; `m` is the mapping its
-// flattening sees (the transform with the origin in it, scaled ×3 horizontally in Lcd format).
-Status check_job(const FillJob& job, const Affine& m, const FillOptions& options, double tol) {
+// What fill_path would refuse in job `job` before looking at its path, or ok.
+Status check_job(const FillJob& job, const FillOptions& options) {
     if (job.path == nullptr) return Error{"path is null"};
     const MaskView& t = job.target;
     if (options.format == CoverageFormat::Lcd) {
@@ -104,21 +48,20 @@ Status check_job(const FillJob& job, const Affine& m, const FillOptions& options
     if (Status s = raster_detail::check_target(t); !s) return s;
     if (!job.origin.is_finite()) return Error{"raster origin is not finite (NaN or infinity)"};
     if (!job.transform.is_finite()) return Error{"transform is not finite"};
-    const Path& path = *job.path;
-    if (path.points().empty()) return ok_status();
-    bool finite = true;
-    const Rect box = control_box(path.points(), finite);
-    if (!finite) return Error{bad_point(path, m)};
-    for (Point c : {Point{box.x0, box.y0}, Point{box.x1, box.y0}, Point{box.x0, box.y1},
-                    Point{box.x1, box.y1}})
-        if (!in_range(m * c)) return Error{bad_point(path, m)};
-    const double estimate = raster_detail::estimate_segments_in_box(path, box, m, tol);
-    if (!(estimate <= static_cast<double>(kMaxEdges)))
-        return Error{"path would flatten to about " +
-                     (std::isfinite(estimate) ? std::to_string(static_cast<long long>(estimate))
-                                              : std::string("infinitely many")) +
-                     " segments, more than the " + std::to_string(kMaxEdges) + " a fill takes"};
     return ok_status();
+}
+
+// check_job's verdict without building a Status for a valid job (the test every job takes);
+// false exactly when check_job names an error.
+bool job_is_valid(const FillJob& job, const FillOptions& options) {
+    const MaskView& t = job.target;
+    if (job.path == nullptr || t.width < 0 || t.height < 0 || t.width > kMaxBitmapDim ||
+        t.height > kMaxBitmapDim || (t.data == nullptr && t.width > 0 && t.height > 0))
+        return false;
+    if (options.format == CoverageFormat::Lcd &&
+        (t.width % 3 != 0 || t.width > kMaxBitmapDim - 2 * kLcdSampleReach))
+        return false;
+    return job.origin.is_finite() && job.transform.is_finite();
 }
 
 // The transform with the job's origin in its translation: fill_path's moved_by, the same bits.
@@ -146,16 +89,16 @@ Status Rasterizer::fill_paths(const FillJob* jobs, std::size_t count, const Fill
     if (options.origin.x != 0.0 || options.origin.y != 0.0)
         return fail(count, "fill_paths: FillOptions::origin must be zero (each FillJob carries "
                            "its origin)");
-    const double tol = std::max(options.flatten.tolerance_px, kMinFlattenTolerancePx);
-    const bool lcd = options.format == CoverageFormat::Lcd;
     for (std::size_t k = 0; k < count; ++k) {
-        const Affine m = lcd ? Affine::scale(3.0, 1.0) * placed(jobs[k]) : placed(jobs[k]);
-        if (Status s = check_job(jobs[k], m, options, tol); !s)
+        if (job_is_valid(jobs[k], options)) continue;
+        if (Status s = check_job(jobs[k], options); !s)
             return fail(k, job_label(k) + s.error().message);
     }
 
     // The plain fill (what glyph atlases ask for): each job tries the direct route and falls back
     // to the general one, as fill_path_impl does, without fill_path's per-call dispatch.
+    const double tol = std::max(options.flatten.tolerance_px, kMinFlattenTolerancePx);
+    const bool lcd = options.format == CoverageFormat::Lcd;
     const FlattenOptions& flatten = options.flatten;
     const bool balanced = flatten.method == FlattenMethod::WangUniform &&
                           flatten.tolerance_px > 0.0 && std::isfinite(flatten.tolerance_px);

@@ -11,7 +11,6 @@
 #include "raster/direct_fill.hpp"
 #include "raster/overlap.hpp"
 #include "raster/render_flatten.hpp"
-#include "raster/segment_budget.hpp"
 
 namespace bezel {
 
@@ -40,22 +39,15 @@ double wang_segments(const Point* p, int degree, const Affine& m, double tol) {
     return std::isnan(n) ? 1.0 : n;
 }
 
-}  // namespace
-
-namespace raster_detail {
-
+// Estimated segments of the flattened path, saturating: the caller only compares with kMaxEdges.
 double estimate_segments(const Path& path, const Affine& m, double tol) {
-    Rect box = Rect::empty();
-    for (const Point& p : path.points()) box = box.union_with(p);
-    return estimate_segments_in_box(path, box, m, tol);
-}
-
-double estimate_segments_in_box(const Path& path, const Rect& box, const Affine& m, double tol) {
     const std::vector<Point>& pts = path.points();
     // Cheap bound first. Every control point lies in the control box, of diagonal D after the
     // transform, so each second difference is ≤ 2D (two steps each ≤ D), and a cubic — the worse
     // degree — needs at most ⌈√(6·2D / (8·tol))⌉ = ⌈√(1.5·D/tol)⌉ steps. If even every verb at
     // that count fits, skip the per-curve pass (always, for glyphs).
+    Rect box = Rect::empty();
+    for (const Point& p : pts) box = box.union_with(p);
     if (!pts.empty()) {
         Rect tb = Rect::empty();
         for (Point c : {Point{box.x0, box.y0}, Point{box.x1, box.y0}, Point{box.x0, box.y1},
@@ -88,7 +80,7 @@ double estimate_segments_in_box(const Path& path, const Rect& box, const Affine&
     return total;
 }
 
-}  // namespace raster_detail
+}  // namespace
 
 template <typename View>
 Status Rasterizer::fill_path_impl(const Path& path, const Affine& transform, FillRule rule,
@@ -111,7 +103,7 @@ Status Rasterizer::fill_path_general(const Path& path, const Affine& transform, 
     const double tol = std::max(options.tolerance_px, kMinFlattenTolerancePx);
     const bool balanced = options.method == FlattenMethod::WangUniform &&
                           options.tolerance_px > 0.0 && std::isfinite(options.tolerance_px);
-    const double estimate = raster_detail::estimate_segments(path, transform, tol);
+    const double estimate = estimate_segments(path, transform, tol);
     if (!(estimate <= static_cast<double>(kMaxEdges)))
         return Error{"fill_path: path would flatten to about " +
                      (std::isfinite(estimate) ? std::to_string(static_cast<long long>(estimate))
