@@ -7,11 +7,10 @@
 // and tolerance) are dispatched once, and the job's transform and origin are not checked again.
 //
 // The path's own points are not checked in the validation pass: proving them finite and within
-// kMaxFlattenCoordinatePx takes a pass over every point (about 9 instructions a point, some 550
-// a 12 px glyph: 8 % of the set's time, docs/perf-log.md), and the fill already makes that
-// proof as it goes (the direct route's box pass refuses a path it does not hold, the general
-// route reports it before writing). So a bad path stops the set at its job, the jobs before it
-// written.
+// kMaxFlattenCoordinatePx takes a pass over every point, a sizeable share of a small glyph's
+// fill (docs/perf-log.md), and the fill already makes that proof as it goes (the direct
+// route's box pass refuses a path its target does not hold, the general route reports it
+// before writing). So a bad path stops the set at its job, the jobs before it written.
 #include <algorithm>
 #include <cmath>
 #include <string>
