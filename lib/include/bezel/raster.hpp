@@ -231,8 +231,7 @@ public:
     // before it are written, it and the jobs after it are not): what fill_path finds in the path
     // itself, a point that is not finite or beyond kMaxFlattenCoordinatePx after the transform,
     // a path over the edge budget, a curve the flattener gives up on. (Proving every point good
-    // up front would take one more pass over all points, a sizeable share of a small glyph's
-    // fill: docs/rasterizer.md.)
+    // up front would take one more pass over all points: docs/rasterizer.md says what it costs.)
     // When `failed_job` is not null, an error stores the index of the job it names there (count
     // when the set itself is at fault: the options or a null array); success leaves it alone.
     // An empty set (count 0) is a success that writes nothing. Allocates nothing once the
