@@ -599,6 +599,29 @@ TEST(GlyphSet, DrawSetGivesDrawsBytesForEveryAsciiGlyph) {
     }
 }
 
+TEST(GlyphSet, ColourGlyphsBetweenOutlineGlyphsAreDrawnAsDrawDrawsThem) {
+    // A COLR glyph splits the run of outline glyphs around it: its alpha is draw()'s, and the
+    // outline glyphs before and after it are too (one fill_paths call each side).
+    auto font = Font::open(BEZEL_FONTS_DIR "/colour/test_glyphs-glyf_colr_1.ttf");
+    ASSERT_TRUE(font) << font.error().message;
+    GlyphRasterizer rasterizer(*font);
+    GlyphRenderOptions o;
+    o.size_px = 24;
+    const GlyphId circles = font->glyph_for_char(0xF0E01).value();   // colored_circles_v1
+    GlyphId a = 0;   // the first glyph drawn from its outline, with ink
+    for (GlyphId g = 0; g < font->glyph_count() && a == 0; ++g) {
+        auto box = rasterizer.measure(g, o);
+        if (box && !box->color && box->width > 0) a = g;
+    }
+    ASSERT_NE(a, 0u);
+    const std::vector<GlyphId> gids{a, circles, a, circles, a};
+    std::vector<PreparedGlyph> glyphs;
+    ASSERT_TRUE(rasterizer.prepare_set(gids.data(), gids.size(), o, glyphs).ok());
+    ASSERT_TRUE(glyphs[1].box.color);
+    ASSERT_FALSE(glyphs[0].box.color);
+    expect_set_equals_draw(rasterizer, glyphs, "colour between outlines");
+}
+
 TEST(GlyphSet, ClippedAndHugeGlyphJobsTakeTheGeneralRouteWithFillPathsBytes) {
     // Glyph outlines as raw fill_paths jobs that the direct route refuses: overhanging a small
     // target (clipped) and scaled 40x into it (huge), mixed with jobs it takes.
