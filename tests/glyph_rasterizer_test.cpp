@@ -2,15 +2,19 @@
 // box, subpixel offsets, LCD boxes, and the input it refuses.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "bezel/freetype_reference.hpp"
 #include "bezel/text.hpp"
+#include "support/allocation_counter.hpp"
 
 namespace bezel {
 namespace {
+
+using bezel::test::g_allocations;
 
 const std::string kDejaVu = BEZEL_FONTS_DIR "/dejavu-sans/DejaVuSans.ttf";
 const std::string kCantarell = BEZEL_FONTS_DIR "/cantarell/Cantarell-Regular.otf";
@@ -513,6 +517,218 @@ TEST(BitmapStrikes, CacheKeysTheStrikeChoice) {
     EXPECT_FALSE((*outline)->box.bitmap_strike);
     EXPECT_TRUE((*strike)->box.bitmap_strike);
     EXPECT_EQ(std::vector<std::uint8_t>((*strike)->mask.data, (*strike)->mask.data + 120), ramp());
+}
+
+// --- Glyph sets: GlyphRasterizer::prepare_set / draw_set and Rasterizer::fill_paths on glyphs ---
+
+std::vector<GlyphId> ascii_glyphs(const Font& font) {
+    std::vector<GlyphId> gids;
+    for (char32_t c = 33; c < 127; ++c) gids.push_back(font.glyph_for_char(c).value());
+    return gids;
+}
+
+// Each glyph of `glyphs` drawn by draw() into its own buffer, and by one draw_set call into
+// another buffer and into an atlas: the same bytes, three ways.
+void expect_set_equals_draw(GlyphRasterizer& rasterizer, const std::vector<PreparedGlyph>& glyphs,
+                            const std::string& what) {
+    const int bpp = glyphs.front().options.fill.format == CoverageFormat::Lcd ? 3 : 1;
+    std::vector<Mask> alone, in_set;
+    std::vector<GlyphDrawJob> jobs, atlas_jobs;
+    int atlas_w = 0, atlas_h = 0;
+    for (const PreparedGlyph& g : glyphs) {
+        atlas_w += bpp * g.box.width + 1;   // one row of glyphs, a gap byte after each
+        atlas_h = std::max(atlas_h, g.box.height);
+    }
+    Mask atlas(atlas_w, atlas_h, 0x5A);
+    int x = 0;
+    for (const PreparedGlyph& g : glyphs) {
+        alone.emplace_back(bpp * g.box.width + 2, g.box.height + 1, 0xAB);   // a margin too
+        in_set.emplace_back(bpp * g.box.width + 2, g.box.height + 1, 0xAB);
+    }
+    for (std::size_t k = 0; k < glyphs.size(); ++k) {
+        const PreparedGlyph& g = glyphs[k];
+        ASSERT_TRUE(rasterizer.draw(g, alone[k].view()).ok()) << what;
+        jobs.push_back({&g, in_set[k].view()});
+        atlas_jobs.push_back({&g, atlas.view().sub(x, 0, bpp * g.box.width, g.box.height)});
+        x += bpp * g.box.width + 1;
+    }
+    ASSERT_TRUE(rasterizer.draw_set(jobs).ok()) << what;
+    ASSERT_TRUE(rasterizer.draw_set(atlas_jobs).ok()) << what;
+    x = 0;
+    for (std::size_t k = 0; k < glyphs.size(); ++k) {
+        const PreparedGlyph& g = glyphs[k];
+        ASSERT_EQ(in_set[k].pixels(), alone[k].pixels()) << what << ", glyph " << g.gid;
+        for (int y = 0; y < atlas_h; ++y)
+            for (int i = 0; i <= bpp * g.box.width && x + i < atlas_w; ++i) {
+                const bool in_box = i < bpp * g.box.width && y < g.box.height;
+                ASSERT_EQ(atlas.view().at(x + i, y), in_box ? alone[k].view().at(i, y) : 0x5A)
+                    << what << ", glyph " << g.gid << " atlas byte " << i << "," << y;
+            }
+        x += bpp * g.box.width + 1;
+    }
+}
+
+TEST(GlyphSet, DrawSetGivesDrawsBytesForEveryAsciiGlyph) {
+    // Sizes of the direct route's both regimes and a size whose boxes need several bands (the
+    // general route), at a subpixel pen, both box modes, LCD, and synthetic bold (accurate
+    // overlap): draw_set's bytes are draw()'s in separate buffers and in an atlas.
+    for (const std::string& file : {kDejaVu, kCantarell}) {
+        auto font = Font::open(file);
+        ASSERT_TRUE(font);
+        GlyphRasterizer rasterizer(*font);
+        const std::vector<GlyphId> gids = ascii_glyphs(*font);
+        std::vector<GlyphRenderOptions> variants;
+        for (double size : {12.0, 16.0, 24.0, 150.0, 900.0}) {
+            GlyphRenderOptions o;
+            o.size_px = size;
+            o.offset_px = {0.375, 0.25};
+            o.box = size == 16.0 ? GlyphBoxMode::FreeType : GlyphBoxMode::Tight;
+            variants.push_back(o);
+        }
+        variants.push_back(variants[1]);
+        variants.back().fill.format = CoverageFormat::Lcd;
+        variants.push_back(variants[2]);
+        variants.back().bold = 0.04;
+        for (const GlyphRenderOptions& o : variants) {
+            std::vector<PreparedGlyph> glyphs;
+            ASSERT_TRUE(rasterizer.prepare_set(gids.data(), gids.size(), o, glyphs).ok());
+            ASSERT_EQ(glyphs.size(), gids.size());
+            expect_set_equals_draw(rasterizer, glyphs,
+                                   file + " at " + std::to_string(o.size_px) + " px");
+        }
+    }
+}
+
+TEST(GlyphSet, ColourGlyphsBetweenOutlineGlyphsAreDrawnAsDrawDrawsThem) {
+    // A COLR glyph splits the run of outline glyphs around it: its alpha is draw()'s, and the
+    // outline glyphs before and after it are too (one fill_paths call each side).
+    auto font = Font::open(BEZEL_FONTS_DIR "/colour/test_glyphs-glyf_colr_1.ttf");
+    ASSERT_TRUE(font) << font.error().message;
+    GlyphRasterizer rasterizer(*font);
+    GlyphRenderOptions o;
+    o.size_px = 24;
+    const GlyphId circles = font->glyph_for_char(0xF0E01).value();   // colored_circles_v1
+    GlyphId a = 0;   // the first glyph drawn from its outline, with ink
+    for (GlyphId g = 0; g < font->glyph_count() && a == 0; ++g) {
+        auto box = rasterizer.measure(g, o);
+        if (box && !box->color && box->width > 0) a = g;
+    }
+    ASSERT_NE(a, 0u);
+    const std::vector<GlyphId> gids{a, circles, a, circles, a};
+    std::vector<PreparedGlyph> glyphs;
+    ASSERT_TRUE(rasterizer.prepare_set(gids.data(), gids.size(), o, glyphs).ok());
+    ASSERT_TRUE(glyphs[1].box.color);
+    ASSERT_FALSE(glyphs[0].box.color);
+    expect_set_equals_draw(rasterizer, glyphs, "colour between outlines");
+}
+
+TEST(GlyphSet, ClippedAndHugeGlyphJobsTakeTheGeneralRouteWithFillPathsBytes) {
+    // Glyph outlines as raw fill_paths jobs that the direct route refuses: overhanging a small
+    // target (clipped) and scaled 40x into it (huge), mixed with jobs it takes.
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    GlyphRasterizer rasterizer(*font);
+    GlyphRenderOptions o;
+    o.size_px = 20;
+    std::vector<PreparedGlyph> glyphs;
+    const std::vector<GlyphId> gids = ascii_glyphs(*font);
+    ASSERT_TRUE(rasterizer.prepare_set(gids.data(), gids.size(), o, glyphs).ok());
+    std::vector<Mask> targets;
+    std::vector<FillJob> jobs;
+    for (std::size_t k = 0; k < glyphs.size(); ++k) targets.emplace_back(16, 14, 0xAB);
+    for (std::size_t k = 0; k < glyphs.size(); ++k) {
+        const PreparedGlyph& g = glyphs[k];
+        const Affine inside = Affine::translate({-double(g.box.left), double(g.box.top)});
+        const Affine m = k % 3 == 0 ? inside
+                         : k % 3 == 1 ? Affine::translate({-6, 3}) * inside
+                                      : Affine::scale(40) * Affine::translate({-5, 0}) * inside;
+        jobs.push_back({&g.path, m, targets[k].view(), {0.5, 0.125}});
+    }
+    Rasterizer r;
+    ASSERT_TRUE(r.fill_paths(jobs).ok());
+    FillOptions fill;
+    fill.origin = {0.5, 0.125};
+    for (std::size_t k = 0; k < jobs.size(); ++k) {
+        Mask alone(16, 14, 0xAB);
+        ASSERT_TRUE(r.fill_path(*jobs[k].path, jobs[k].transform, alone.view(), fill).ok());
+        ASSERT_EQ(targets[k].pixels(), alone.pixels()) << "job " << k;
+    }
+}
+
+TEST(GlyphSet, BadJobsAreNamedBeforeAnyGlyphIsDrawn) {
+    auto font = Font::open(kDejaVu);
+    ASSERT_TRUE(font);
+    GlyphRasterizer rasterizer(*font);
+    GlyphRenderOptions o;
+    o.size_px = 14;
+    const std::vector<GlyphId> gids = ascii_glyphs(*font);
+    std::vector<PreparedGlyph> glyphs;
+    ASSERT_TRUE(rasterizer.prepare_set(gids.data(), 4, o, glyphs).ok());
+    std::vector<Mask> targets(4, Mask(40, 40, 0xAB));
+    std::vector<GlyphDrawJob> jobs;
+    for (std::size_t k = 0; k < 4; ++k) jobs.push_back({&glyphs[k], targets[k].view()});
+    const auto untouched = [&] {
+        for (const Mask& t : targets)
+            if (t.pixels() != std::vector<std::uint8_t>(1600, 0xAB)) return false;
+        return true;
+    };
+    jobs[3].target = targets[3].view().sub(0, 0, 2, 2);   // smaller than the glyph
+    Status s = rasterizer.draw_set(jobs);
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.error().message.find("glyph set job 3 (glyph " + std::to_string(glyphs[3].gid) +
+                                     "): target 2x2 is smaller"),
+              std::string::npos) << s.error().message;
+    EXPECT_TRUE(untouched());
+    jobs[3].target = targets[3].view();
+    jobs[2].glyph = nullptr;
+    s = rasterizer.draw_set(jobs);
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.error().message.find("glyph set job 2: the glyph is null"), std::string::npos)
+        << s.error().message;
+    EXPECT_TRUE(untouched());
+    // A glyph id past the font's: prepare_set names its index and the glyph.
+    std::vector<GlyphId> bad{gids[0], gids[1], static_cast<GlyphId>(font->glyph_count() + 5)};
+    s = rasterizer.prepare_set(bad.data(), bad.size(), o, glyphs);
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().message.rfind("prepare_set: job 2: ", 0), 0u) << s.error().message;
+    EXPECT_NE(s.error().message.find("glyph id " + std::to_string(bad[2])), std::string::npos)
+        << s.error().message;
+    EXPECT_EQ(glyphs.size(), 2u);
+    // An empty set is a success.
+    EXPECT_TRUE(rasterizer.draw_set(nullptr, 0).ok());
+    EXPECT_TRUE(rasterizer.prepare_set(nullptr, 0, o, glyphs).ok());
+    EXPECT_TRUE(glyphs.empty());
+}
+
+TEST(GlyphSet, WarmSetsAllocateNothing) {
+    // Once its scratch has grown, a set of the same glyphs (and a smaller one) allocates nothing:
+    // neither draw_set's job list nor fill_paths' fill.
+    auto font = Font::open(kCantarell);
+    ASSERT_TRUE(font);
+    GlyphRasterizer rasterizer(*font);
+    GlyphRenderOptions o;
+    o.size_px = 18;
+    const std::vector<GlyphId> gids = ascii_glyphs(*font);
+    std::vector<PreparedGlyph> glyphs;
+    ASSERT_TRUE(rasterizer.prepare_set(gids.data(), gids.size(), o, glyphs).ok());
+    std::vector<Mask> targets;
+    for (const PreparedGlyph& g : glyphs) targets.emplace_back(g.box.width, g.box.height);
+    std::vector<GlyphDrawJob> jobs;
+    std::vector<FillJob> fill_jobs;
+    for (std::size_t k = 0; k < glyphs.size(); ++k) {
+        jobs.push_back({&glyphs[k], targets[k].view()});
+        fill_jobs.push_back({&glyphs[k].path, Affine::translate({0, 0}), targets[k].view(), {}});
+    }
+    Rasterizer r;
+    ASSERT_TRUE(rasterizer.draw_set(jobs).ok());
+    ASSERT_TRUE(r.fill_paths(fill_jobs).ok());
+    const long before = g_allocations.load();
+    for (int rep = 0; rep < 3; ++rep) {
+        ASSERT_TRUE(rasterizer.draw_set(jobs).ok());
+        ASSERT_TRUE(rasterizer.draw_set(jobs.data(), jobs.size() / 2).ok());
+        ASSERT_TRUE(r.fill_paths(fill_jobs).ok());
+    }
+    EXPECT_EQ(g_allocations.load() - before, 0);
 }
 
 }  // namespace

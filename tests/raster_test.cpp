@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <random>
 #include <vector>
@@ -1236,6 +1237,268 @@ TEST(RasterKernels, ByteSweepsSaturateAtFullCoverageForEveryWindingUpToTheEdgeLi
             }
         }
     }
+}
+
+// --- Rasterizer::fill_paths: sets of fills in one call -----------------------------------------
+
+// A job of the set tests: its path, transform, origin and target (prefilled with a byte that no
+// fill writes everywhere, so an untouched target is visible).
+struct SetCase {
+    Path path;
+    Affine transform;
+    Vec2 origin;
+    Mask target;
+};
+
+// Random curved paths placed three ways: inside the target (the direct route), partly outside
+// (clipped: the general route), and scaled far beyond it (huge: the general route, clipped in
+// double), with fractional origins.
+std::vector<SetCase> random_set(std::mt19937& rng, int n) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<SetCase> out;
+    for (int k = 0; k < n; ++k) {
+        SetCase c;
+        const int w = 1 + static_cast<int>(rng() % 120), h = 1 + static_cast<int>(rng() % 50);
+        c.path = random_curved_path(rng);
+        switch (k % 4) {
+            case 0: case 1: c.transform = {w - 1.0, 0, 0, h - 1.0, 0, 0}; break;
+            case 2: c.transform = {1.6 * w, 0.3 * h, -0.2 * w, 1.4 * h, -0.3 * w, -0.2 * h}; break;
+            default: c.transform = Affine::scale(4e4) * Affine::translate({-0.5, -0.5}); break;
+        }
+        c.origin = {u(rng), u(rng)};
+        c.target = Mask(w, h, 0xAB);
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+std::vector<FillJob> jobs_of(std::vector<SetCase>& cases) {
+    std::vector<FillJob> jobs;
+    for (SetCase& c : cases) jobs.push_back({&c.path, c.transform, c.target.view(), c.origin});
+    return jobs;
+}
+
+// Each job's bytes as fill_path makes them, with the job's origin in the options.
+void expect_each_job_equals_fill_path(std::vector<SetCase>& cases, FillOptions options,
+                                      const char* what) {
+    Rasterizer single;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        const SetCase& c = cases[k];
+        Mask alone(c.target.width(), c.target.height(), 0xAB);
+        options.origin = c.origin;
+        ASSERT_TRUE(single.fill_path(c.path, c.transform, alone.view(), options).ok());
+        ASSERT_EQ(c.target.pixels(), alone.pixels()) << what << ", job " << k;
+    }
+}
+
+TEST(RasterSet, EachJobEqualsItsOwnFillPathByteForByte) {
+    std::mt19937 rng(3434);
+    for (FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
+        std::vector<SetCase> cases = random_set(rng, 120);
+        std::vector<FillJob> jobs = jobs_of(cases);
+        Rasterizer r;
+        FillOptions options;
+        options.rule = rule;
+        ASSERT_TRUE(r.fill_paths(jobs, options).ok());
+        expect_each_job_equals_fill_path(cases, options, "plain fill");
+    }
+}
+
+TEST(RasterSet, EveryFillOptionGivesFillPathsBytes) {
+    // The options fill_paths does not take its own route for (LCD, accurate overlap, combining,
+    // other flatteners, coarse tolerances) go through fill_path job by job: the same bytes. A
+    // job fill_path itself refuses while flattening (ClassicFlatness gives up on some random
+    // cubics after 16 halvings) stops the set there: the jobs before it written, it and the
+    // rest untouched, its index reported.
+    std::mt19937 rng(5656);
+    std::vector<FillOptions> variants(6);
+    variants[0].format = CoverageFormat::Lcd;
+    variants[1].overlap = OverlapMode::Accurate;
+    variants[2].combine = CoverageCombine::Over;
+    variants[3].combine = CoverageCombine::Add;
+    variants[4].flatten.method = FlattenMethod::ClassicFlatness;
+    variants[5].flatten.tolerance_px = 0.7;   // past the direct route's largest tolerance
+    int stopped = 0;
+    for (std::size_t v = 0; v < variants.size(); ++v) {
+        std::vector<SetCase> cases = random_set(rng, 24);
+        if (variants[v].format == CoverageFormat::Lcd)
+            for (SetCase& c : cases)   // 3 bytes a display pixel
+                c.target = Mask(3 * c.target.width(), c.target.height(), 0xAB);
+        // The first job fill_path refuses, if any.
+        std::size_t first_refused = cases.size();
+        Rasterizer single;
+        for (std::size_t k = 0; k < cases.size() && first_refused == cases.size(); ++k) {
+            Mask scratch(cases[k].target.width(), cases[k].target.height());
+            FillOptions o = variants[v];
+            o.origin = cases[k].origin;
+            if (!single.fill_path(cases[k].path, cases[k].transform, scratch.view(), o).ok())
+                first_refused = k;
+        }
+        std::vector<FillJob> jobs = jobs_of(cases);
+        Rasterizer r;
+        std::size_t failed = cases.size();
+        const Status s = r.fill_paths(jobs, variants[v], &failed);
+        if (first_refused == cases.size()) {
+            ASSERT_TRUE(s.ok()) << "variant " << v << ": " << s.error().message;
+        } else {
+            ++stopped;
+            ASSERT_FALSE(s.ok()) << "variant " << v;
+            EXPECT_EQ(failed, first_refused) << "variant " << v;
+            EXPECT_NE(s.error().message.find("job " + std::to_string(first_refused) + ": "),
+                      std::string::npos) << s.error().message;
+            for (std::size_t k = first_refused; k < cases.size(); ++k)
+                EXPECT_EQ(cases[k].target.pixels(),
+                          std::vector<std::uint8_t>(cases[k].target.pixels().size(), 0xAB))
+                    << "variant " << v << ", job " << k << " was written";
+            cases.resize(first_refused);
+        }
+        expect_each_job_equals_fill_path(cases, variants[v], "option variant");
+    }
+    RecordProperty("sets_stopped_by_a_refused_flattening", stopped);
+}
+
+TEST(RasterSet, AtlasJobsFillTheirRectanglesAndLeaveTheGapsAlone) {
+    // Six jobs into one 80×40 atlas, each a rectangle with a 1-pixel gap around it: each
+    // rectangle holds its own fill_path's bytes, every gap byte keeps its value.
+    std::mt19937 rng(7878);
+    Mask atlas(80, 40, 0x5A);
+    std::vector<Path> paths;
+    for (int k = 0; k < 6; ++k) paths.push_back(random_curved_path(rng));
+    struct Rect { int x, y, w, h; };
+    const std::vector<Rect> rects{{1, 1, 20, 17}, {23, 1, 30, 17}, {55, 1, 24, 17},
+                                  {1, 20, 10, 19}, {13, 20, 40, 19}, {55, 20, 24, 19}};
+    std::vector<FillJob> jobs;
+    for (std::size_t k = 0; k < rects.size(); ++k) {
+        const Rect& q = rects[k];
+        // The first three inside their rectangle, the others overhanging it (clipped).
+        const double grow = k < 3 ? 1.0 : 1.8;
+        jobs.push_back({&paths[k], Affine::scale(grow * (q.w - 1), grow * (q.h - 1)),
+                        atlas.view().sub(q.x, q.y, q.w, q.h), {0.25 * double(k), 0.5}});
+    }
+    Rasterizer r;
+    ASSERT_TRUE(r.fill_paths(jobs).ok());
+    std::vector<bool> inside(80 * 40, false);
+    for (std::size_t k = 0; k < rects.size(); ++k) {
+        const Rect& q = rects[k];
+        Mask alone(q.w, q.h);
+        FillOptions o;
+        o.origin = jobs[k].origin;
+        ASSERT_TRUE(r.fill_path(paths[k], jobs[k].transform, alone.view(), o).ok());
+        for (int y = 0; y < q.h; ++y)
+            for (int x = 0; x < q.w; ++x) {
+                ASSERT_EQ(atlas.view().at(q.x + x, q.y + y), alone.view().at(x, y))
+                    << "job " << k << " pixel " << x << "," << y;
+                inside[std::size_t(q.y + y) * 80 + std::size_t(q.x + x)] = true;
+            }
+    }
+    for (int y = 0; y < 40; ++y)
+        for (int x = 0; x < 80; ++x) {
+            if (!inside[std::size_t(y) * 80 + std::size_t(x)]) {
+                ASSERT_EQ(atlas.view().at(x, y), 0x5A) << "gap pixel " << x << "," << y;
+            }
+        }
+}
+
+TEST(RasterSet, InvalidJobIsNamedAndNoTargetIsTouched) {
+    // Job 2 of four is bad in each way fill_path would refuse; the error names it, says what is
+    // wrong and reports its index. A bad job (null path, target, transform, origin) is found by
+    // the validation pass: all four targets stay as they were. A bad path is found when its job
+    // is reached: jobs 0 and 1 are written (fill_path's bytes), 2 and 3 are not.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    Path good;
+    good.move_to({1, 1});
+    good.quad_to({8, 2}, {6, 7});
+    good.close();
+    Path bad_point = good;
+    bad_point.line_to({nan, 3});
+    bad_point.close();
+    Path beyond_budget;   // curves that would flatten to far more than kMaxEdges segments
+    beyond_budget.move_to({0, 0});
+    for (int i = 0; i < 200; ++i) beyond_budget.cubic_to({1e9, 0}, {1e9, 1e9}, {0, 1e9});
+    beyond_budget.close();
+    struct Bad {
+        const char* what;
+        std::function<void(FillJob&)> spoil;
+        const char* message;
+        bool in_path;   // found when the job is reached, not by the validation pass
+    };
+    const std::vector<Bad> cases{
+        {"null path", [](FillJob& j) { j.path = nullptr; }, "path is null", false},
+        {"negative target", [](FillJob& j) { j.target.width = -3; }, "is outside 0..", false},
+        {"null target memory", [](FillJob& j) { j.target.data = nullptr; }, "null data", false},
+        {"NaN transform", [&](FillJob& j) { j.transform.c = nan; }, "transform is not finite",
+         false},
+        {"infinite origin",
+         [](FillJob& j) { j.origin.x = std::numeric_limits<double>::infinity(); },
+         "origin is not finite", false},
+        {"NaN point", [&](FillJob& j) { j.path = &bad_point; }, "is not finite after", true},
+        {"huge point", [](FillJob& j) { j.transform = Affine::scale(1e300); }, "beyond 2^50 px",
+         true},
+        {"edge budget", [&](FillJob& j) { j.path = &beyond_budget; }, "segments at tolerance",
+         true},
+    };
+    Mask filled(10, 9);
+    ASSERT_TRUE(Rasterizer().fill_path(good, Affine::identity(), filled.view()).ok());
+    for (const Bad& b : cases) {
+        std::vector<Mask> targets(4, Mask(10, 9, 0xAB));
+        std::vector<FillJob> jobs;
+        for (Mask& t : targets) jobs.push_back({&good, Affine::identity(), t.view(), {}});
+        b.spoil(jobs[2]);
+        Rasterizer r;
+        std::size_t failed = 99;
+        const Status s = r.fill_paths(jobs, {}, &failed);
+        ASSERT_FALSE(s.ok()) << b.what;
+        EXPECT_NE(s.error().message.find("fill_paths: job 2: "), std::string::npos)
+            << b.what << ": " << s.error().message;
+        EXPECT_NE(s.error().message.find(b.message), std::string::npos)
+            << b.what << ": " << s.error().message;
+        EXPECT_EQ(failed, 2u) << b.what;
+        for (std::size_t k = 0; k < targets.size(); ++k) {
+            const bool written = b.in_path && k < 2;
+            EXPECT_EQ(targets[k].pixels(),
+                      written ? filled.pixels() : std::vector<std::uint8_t>(90, 0xAB))
+                << b.what << ": target " << k;
+        }
+    }
+    // A fault of the set itself: its index is the job count.
+    Mask t(4, 4, 0xAB);
+    std::vector<FillJob> one{{&good, Affine::identity(), t.view(), {}}};
+    FillOptions moved;
+    moved.origin = {1, 0};
+    std::size_t failed = 99;
+    Rasterizer r;
+    const Status s = r.fill_paths(one, moved, &failed);
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.error().message.find("origin must be zero"), std::string::npos);
+    EXPECT_EQ(failed, 1u);
+    EXPECT_FALSE(r.fill_paths(nullptr, 3).ok());
+}
+
+TEST(RasterSet, EmptySetSucceedsAndWritesNothing) {
+    Rasterizer r;
+    EXPECT_TRUE(r.fill_paths(nullptr, 0).ok());
+    EXPECT_TRUE(r.fill_paths(std::vector<FillJob>{}).ok());
+    EXPECT_EQ(r.scratch_capacity_bytes(), 0u);
+    // A job whose path is empty clears its target, as fill_path does.
+    Path empty;
+    Mask t(5, 3, 0xAB);
+    ASSERT_TRUE(r.fill_paths({{&empty, Affine::identity(), t.view(), {}}}).ok());
+    EXPECT_EQ(t.pixels(), std::vector<std::uint8_t>(15, 0));
+}
+
+TEST(RasterSet, ScratchStopsGrowingOnceTheLargestJobWasFilled) {
+    // fill_paths shares fill_path's scratch: a repeated set, or a set of smaller jobs, does not
+    // grow it (allocation counts of a warm set are in glyph_rasterizer_test).
+    std::mt19937 rng(9191);
+    std::vector<SetCase> cases = random_set(rng, 40);
+    std::vector<FillJob> jobs = jobs_of(cases);
+    Rasterizer r;
+    ASSERT_TRUE(r.fill_paths(jobs).ok());
+    const std::size_t warm = r.scratch_capacity_bytes();
+    EXPECT_GT(warm, 0u);
+    for (int rep = 0; rep < 3; ++rep) ASSERT_TRUE(r.fill_paths(jobs).ok());
+    ASSERT_TRUE(r.fill_paths(jobs.data(), jobs.size() / 2).ok());
+    EXPECT_EQ(r.scratch_capacity_bytes(), warm);
 }
 
 }  // namespace

@@ -113,6 +113,7 @@ int run_atlas(AtlasArgs& args) {
     options.bold = args.bold;
 
     std::vector<Entry> entries;
+    std::vector<PreparedGlyph> prepared;   // entries[i]'s glyph
     std::vector<AtlasRect> sizes;
     MissingGlyphs missing;
     for (char32_t c : distinct) {
@@ -130,10 +131,12 @@ int run_atlas(AtlasArgs& args) {
         }
         // Each missing character gets its own copy of .notdef, so every character listed in
         // the JSON has its rectangle.
-        auto box = rasterizers[font]->measure(gid.value_or(0), options);
-        if (!box) return fail_runtime(box.error().message);
-        entries.push_back({c, gid.value_or(0), *box, font});
-        sizes.push_back({0, 0, box->width, box->height});
+        // Loaded once: its box places it, and draw_set draws it from the same outline.
+        auto glyph = rasterizers[font]->prepare(gid.value_or(0), options);
+        if (!glyph) return fail_runtime(glyph.error().message);
+        entries.push_back({c, gid.value_or(0), glyph->box, font});
+        sizes.push_back({0, 0, glyph->box.width, glyph->box.height});
+        prepared.push_back(std::move(*glyph));
     }
     if (Status s = report_missing_glyphs(font_list_names(*fonts), missing, args.strict); !s)
         return fail_runtime(s.error().message);
@@ -147,20 +150,33 @@ int run_atlas(AtlasArgs& args) {
     if (rgba) colour_texture.assign(4 * static_cast<std::size_t>(packing->width) * packing->height, 0);
     const RgbaView colour_view{colour_texture.data(), packing->width, packing->height,
                                4 * static_cast<std::ptrdiff_t>(packing->width)};
+    if (rgba) {
+        for (std::size_t i = 0; i < entries.size(); ++i) {
+            const AtlasRect& r = packing->rects[i];
+            if (r.width == 0) continue;
+            const Status drawn = rasterizers[entries[i].font]->draw_rgba(
+                prepared[i], colour_view.sub(r.x, r.y, r.width, r.height));
+            if (!drawn) return fail_runtime(drawn.error().message);
+        }
+    } else {
+        // Each font's glyphs in one set call, each into its rectangle of the texture.
+        std::vector<GlyphDrawJob> jobs;
+        for (std::size_t font = 0; font < rasterizers.size(); ++font) {
+            jobs.clear();
+            for (std::size_t i = 0; i < entries.size(); ++i) {
+                const AtlasRect& r = packing->rects[i];
+                if (entries[i].font == font && r.width > 0)
+                    jobs.push_back({&prepared[i], texture.view().sub(r.x, r.y, r.width, r.height)});
+            }
+            if (Status drawn = rasterizers[font]->draw_set(jobs); !drawn)
+                return fail_runtime(drawn.error().message);
+        }
+    }
     const bool listed = fonts->size() > 1;
     nlohmann::ordered_json glyphs = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < entries.size(); ++i) {
         const Entry& e = entries[i];
         const AtlasRect& r = packing->rects[i];
-        if (r.width > 0) {
-            GlyphRasterizer& rasterizer = *rasterizers[e.font];
-            auto prepared = rasterizer.prepare(e.gid, options);
-            if (!prepared) return fail_runtime(prepared.error().message);
-            const Status drawn =
-                rgba ? rasterizer.draw_rgba(*prepared, colour_view.sub(r.x, r.y, r.width, r.height))
-                     : rasterizer.draw(*prepared, texture.view().sub(r.x, r.y, r.width, r.height));
-            if (!drawn) return fail_runtime(drawn.error().message);
-        }
         std::string utf8;
         append_utf8(utf8, e.code_point);
         glyphs.push_back({{"char", utf8},          {"code_point", format_code_point(e.code_point)},

@@ -155,6 +155,14 @@ struct PreparedGlyph {
     std::shared_ptr<const StrikeBitmap> strike;
 };
 
+// One glyph of a set (GlyphRasterizer::draw_set): `*glyph` drawn into the top-left
+// box.width × box.height corner of `target` (× 3 bytes in LCD modes), as draw() would. For an
+// atlas, `target` is the glyph's rectangle of it (MaskView::sub).
+struct GlyphDrawJob {
+    const PreparedGlyph* glyph = nullptr;   // borrowed for the call; must not be null
+    MaskView target;
+};
+
 // Rasterizes single glyphs of one Font into caller buffers with a stride. What a toolkit calls
 // to fill its own atlas; the one glyph path of bezel (GlyphCache, TextRenderer and the bezel CLI
 // render glyphs through it).
@@ -195,6 +203,28 @@ public:
     // test for a font without colour tables. Svg: bezel draws the glyph from its outline.
     ColorFormat color_format(GlyphId gid);
 
+    // A set of glyphs, what a toolkit filling an atlas calls: prepare_set() loads them all
+    // (their boxes tell the toolkit where each goes), draw_set() draws them all in one
+    // Rasterizer::fill_paths call (one per run of outline glyphs with the same fill options;
+    // colour and bitmap-strike glyphs are drawn as draw() draws them, in order).
+    //
+    // prepare_set: out[k] = prepare(gids[k], options) for k < count (`out` resized to count).
+    // The first error stops it, naming the set index and the glyph; `out` then holds the
+    // glyphs before it.
+    Status prepare_set(const GlyphId* gids, std::size_t count, const GlyphRenderOptions& options,
+                       std::vector<PreparedGlyph>& out);
+    // draw_set: each job's bytes are exactly those of draw(*job.glyph, job.target) (tested);
+    // jobs whose targets overlap are drawn in order. Errors name the set index and the glyph:
+    // a null glyph or a target smaller than the box (draw()'s), found for every job before any
+    // target is written; then the Rasterizer's (fill_paths') and the Painter's, found when the
+    // job is reached, the jobs before it drawn (a glyph from prepare() has finite points within
+    // the limits, so the Rasterizer has nothing to refuse in it).
+    // Allocates nothing for outline glyphs once its scratch has grown to the largest set.
+    Status draw_set(const GlyphDrawJob* jobs, std::size_t count);
+    Status draw_set(const std::vector<GlyphDrawJob>& jobs) {
+        return draw_set(jobs.data(), jobs.size());
+    }
+
     // prepare()'s box alone.
     Expected<GlyphBox> measure(GlyphId gid, const GlyphRenderOptions& options);
     // prepare() then draw(): one outline load. Errors as the two.
@@ -213,6 +243,8 @@ private:
     std::unique_ptr<Painter> painter_;            // made on the first colour glyph
     std::vector<std::uint8_t> rgba_scratch_;      // draw() of a colour glyph
     ColorTables tables_;                          // the font's, read once
+    std::vector<FillJob> set_jobs_;               // draw_set's run of outline glyphs
+    std::vector<std::size_t> set_index_;          // and each one's index in the set
 };
 
 // A rendered glyph owned by a cache: its box and pixels (rows packed: stride = width, or

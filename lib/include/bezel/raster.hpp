@@ -157,6 +157,17 @@ private:
     std::array<std::uint8_t, 256> table_{};
 };
 
+// One fill of a set (Rasterizer::fill_paths): `*path` mapped by `transform`, then moved by
+// `origin` (target pixels, y down; a fractional origin places it at a subpixel offset), into
+// `target`. An atlas is one target named by several jobs through its sub-rectangles
+// (MaskView::sub), each job's origin placing the outline inside its own rectangle.
+struct FillJob {
+    const Path* path = nullptr;   // borrowed for the call; must not be null
+    Affine transform;
+    MaskView target;
+    Vec2 origin;
+};
+
 class Rasterizer {
 public:
     Rasterizer();
@@ -204,6 +215,34 @@ public:
     Status fill_path(const Path& path, const Affine& transform, const FloatMaskView& target,
                      const FillOptions& options = {});
 
+    // Fills a set of paths in one call: job k gives exactly the bytes
+    //   fill_path(*jobs[k].path, jobs[k].transform, jobs[k].target, o)
+    // would, where o is `options` with o.origin = jobs[k].origin (tested byte for byte), the
+    // jobs in order (a later job's target may overwrite an earlier one's where they overlap:
+    // atlas rectangles are meant to be disjoint). What the set shares: the options are checked
+    // and the route (direct or general, direct_fill.hpp) is chosen once for all jobs, and the
+    // scratch memory is one.
+    // Errors, each naming the first job at fault by its index ("fill_paths: job 7: ...").
+    // Found by a validation pass over every job BEFORE any target is written, so they leave
+    // every target untouched: `options.origin` not zero (each job carries its own), a null
+    // `jobs` with count > 0, and per job a null path, a target fill_path would refuse (its size,
+    // null data, in Lcd format a width that is not a multiple of 3), a transform or origin that
+    // is not finite. Found when the job is reached, before its target is written (so the jobs
+    // before it are written, it and the jobs after it are not): what fill_path finds in the path
+    // itself, a point that is not finite or beyond kMaxFlattenCoordinatePx after the transform,
+    // a path over the edge budget, a curve the flattener gives up on. (Proving every point good
+    // up front would take one more pass over all points: docs/rasterizer.md says what it costs.)
+    // When `failed_job` is not null, an error stores the index of the job it names there (count
+    // when the set itself is at fault: the options or a null array); success leaves it alone.
+    // An empty set (count 0) is a success that writes nothing. Allocates nothing once the
+    // scratch has grown to the largest job (as fill_path).
+    Status fill_paths(const FillJob* jobs, std::size_t count, const FillOptions& options = {},
+                      std::size_t* failed_job = nullptr);
+    Status fill_paths(const std::vector<FillJob>& jobs, const FillOptions& options = {},
+                      std::size_t* failed_job = nullptr) {
+        return fill_paths(jobs.data(), jobs.size(), options, failed_job);
+    }
+
     // Bytes of scratch memory currently held (for tests of the no-allocation promise).
     std::size_t scratch_capacity_bytes() const;
 
@@ -215,6 +254,11 @@ private:
     template <typename View>
     Status fill_path_impl(const Path& path, const Affine& transform, FillRule rule,
                           const View& target, const FlattenOptions& flatten_options);
+    // fill_path_impl after the direct route refused (or was not tried): the edge budget, the
+    // balanced or checked flattening and the banded fill.
+    template <typename View>
+    Status fill_path_general(const Path& path, const Affine& transform, FillRule rule,
+                             const View& target, const FlattenOptions& flatten_options);
     template <typename View>
     Status fill_path_gray(const Path& path, const Affine& transform, const View& target,
                           const FillOptions& options);

@@ -94,6 +94,15 @@ Status Rasterizer::fill_path_impl(const Path& path, const Affine& transform, Fil
     if (balanced && raster_detail::fill_path_direct(path, transform, rule, target, tol,
                                                     {acc_, flags_, flattened_.points}))
         return ok_status();
+    return fill_path_general(path, transform, rule, target, options);
+}
+
+template <typename View>
+Status Rasterizer::fill_path_general(const Path& path, const Affine& transform, FillRule rule,
+                                     const View& target, const FlattenOptions& options) {
+    const double tol = std::max(options.tolerance_px, kMinFlattenTolerancePx);
+    const bool balanced = options.method == FlattenMethod::WangUniform &&
+                          options.tolerance_px > 0.0 && std::isfinite(options.tolerance_px);
     const double estimate = estimate_segments(path, transform, tol);
     if (!(estimate <= static_cast<double>(kMaxEdges)))
         return Error{"fill_path: path would flatten to about " +
@@ -127,6 +136,10 @@ Status Rasterizer::fill_path_gray(const Path& path, const Affine& transform, con
                                      features().overlap);
     return ok_status();
 }
+
+// fill_set.cpp fills the jobs the direct route refuses through this.
+template Status Rasterizer::fill_path_general<MaskView>(const Path&, const Affine&, FillRule,
+                                                        const MaskView&, const FlattenOptions&);
 
 // lcd.cpp samples through these, combine.cpp fills its scratch through them.
 template Status Rasterizer::fill_path_gray<FloatMaskView>(const Path&, const Affine&,
