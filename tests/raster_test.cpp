@@ -387,6 +387,48 @@ TEST(RasterDirect, PathTouchingEveryTargetBorderStaysWithinTheTolerance) {
     }
 }
 
+TEST(RasterDirect, ControlPointsStrayingLessThanTheToleranceOutsideAreClampedWithinIt) {
+    // A glyph box from rounded coordinates (FreeType's 26.6 box) may miss the outline by up to
+    // 1/128 px: the route takes such a path (control points up to tol outside the target) and
+    // clamps its vertices into the band, x exactly and y by less than 2·tol, so coverage is
+    // within 2·tol of the exact clipped polyline's. Ellipses overshooting all four sides by
+    // 0.8·tol, in the dense (37 px) and marked (200 px) regimes, through the translated walk
+    // and the stored one (b = 1e-300 maps these points to the same doubles).
+    const double tol = kDefaultRasterTolerancePx, out = 0.8 * tol;
+    std::vector<float> acc;
+    std::vector<std::uint8_t> flags;
+    std::vector<Point> points;
+    for (const int w : {37, 200}) {
+        const int h = 23;
+        Path p;
+        const double k = 0.5523, cx = w / 2.0, cy = h / 2.0, rx = cx + out, ry = cy + out;
+        p.move_to({cx + rx, cy});
+        p.cubic_to({cx + rx, cy + k * ry}, {cx + k * rx, cy + ry}, {cx, cy + ry});
+        p.cubic_to({cx - k * rx, cy + ry}, {cx - rx, cy + k * ry}, {cx - rx, cy});
+        p.quad_to({cx - rx, cy - ry}, {cx, cy - ry});
+        p.line_to({cx + rx, cy - ry});
+        p.close();
+        for (const Affine& m : {Affine::identity(), Affine{1, 1e-300, 0, 1, 0, 0}}) {
+            for (FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
+                FloatImage f(w, h);
+                ASSERT_TRUE(raster_detail::fill_path_direct(p, m, rule, f.view(), tol,
+                                                            {acc, flags, points}));
+                const std::vector<double> ref =
+                    reference_coverage(balanced_polyline(p, m, tol), rule, w, h, {});
+                for (std::size_t i = 0; i < ref.size(); ++i)
+                    ASSERT_NEAR(f.px[i], ref[i], 2.0 * tol) << "w " << w << " pixel " << i;
+                // Farther out than tol the path needs clipping: the general route's.
+                Mask m8(w, h);
+                const Affine wider = Affine::translate({cx, cy}) *
+                                     Affine::scale((rx + 0.5 * tol) / rx) *
+                                     Affine::translate({-cx, -cy});
+                EXPECT_FALSE(raster_detail::fill_path_direct(p, wider * m, rule, m8.view(), tol,
+                                                             {acc, flags, points}));
+            }
+        }
+    }
+}
+
 TEST(RasterDirect, SteepEdgesInsideOneColumnMatchReference) {
     // Edges that stay in one pixel column over many rows take the per-row loop of draw_line:
     // fractional and integer ends, both directions, at the left border, inside, and on the last

@@ -2,8 +2,10 @@
 // band (no Polylines round trip, no per-point bounds pass, no clipping per segment).
 //
 // It applies to the common case of a glyph drawn into a target that holds it: every transformed
-// control point inside the target (so no clipping: the curves lie in their control points'
-// convex hull), one band, and the edge budget met by the cheap bound of path_fill.cpp. Anything
+// control point inside the target or less than the flattening tolerance outside it (so no
+// clipping: the curves lie in their control points' convex hull, and strays are clamped into
+// the target, which moves the outline by less than tol), one band, and the edge budget met by
+// the cheap bound of path_fill.cpp. Anything
 // else returns false with the target untouched, and fill_path takes the general route
 // (flatten_balanced + fill), which also reports every error.
 //
