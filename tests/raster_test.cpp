@@ -1030,6 +1030,54 @@ TEST(RasterKernels, DenseFloatBatchAddsTheDoublePairLoopsCellsWithinFloatRoundin
     RecordProperty("worst_coverage_difference", std::to_string(worst));
 }
 
+TEST(RasterKernels, DenseSteepSegmentsCutAtEveryRowAddTheCellsOfDrawLine) {
+    // A dense batch cuts a steep segment (|dx| ≤ |dy|) that crosses two row borders or more
+    // into one-row pieces for its narrow lanes (dense_steep), in float; draw_line's steep case
+    // in double is the reference. Long ones (up to 120 rows, several kSteepChunk chunks), short
+    // ones (two borders), both directions, ends on the band's left and right borders and just
+    // above row 0 (the direct route's excursions): every cell within float rounding of the
+    // reference, through the baseline batch (F4) and the AVX2 one when the CPU has it.
+    using namespace raster_detail;
+    const int W = 40, H = 120;
+    std::mt19937 rng(31337);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    BatchFn kernels[2] = {draw_dense_batch<F4>, nullptr};
+    if (const BatchKernels* k = avx2_batch_kernels()) kernels[1] = k->dense;
+    for (BatchFn kernel : kernels) {
+        if (kernel == nullptr) continue;
+        BandPair pair(W, H, nullptr, nullptr);
+        for (int trial = 0; trial < 300; ++trial) {
+            SegmentBatch b;
+            const int n = 1 + static_cast<int>(u(rng) * 12);
+            for (int q = 0; q < n; ++q) {
+                const double len = q % 3 == 0 ? 2.0 + u(rng) : 2.0 + u(rng) * (H - 3);
+                double y0 = u(rng) * (H - len), y1 = y0 + len;
+                if (q % 5 == 0) y0 = -0.3 * u(rng);  // an excursion above row 0
+                double x0 = u(rng) * W;
+                double x1 = std::clamp(x0 + (2.0 * u(rng) - 1.0) * (y1 - y0), 0.0, double(W));
+                if (q % 7 == 0) x0 = q % 2 ? 0.0 : W;
+                if (std::fabs(x1 - x0) > y1 - y0) x1 = x0;  // steep (and so a stem) at worst
+                if (q % 2) std::swap(y0, y1), std::swap(x0, x1);
+                const __m128 f = _mm_setr_ps(float(x0), float(y0), float(x1), float(y1));
+                b.fseg[q] = f;
+                alignas(16) float e[4];
+                _mm_store_ps(e, f);  // the reference draws the float-rounded vertices
+                draw_line<false>(pair.first, e[0], e[1], e[2], e[3]);
+            }
+            kernel(pair.second, b, n);
+            for (int y = 0; y < H; ++y) {
+                const float* ra = row_of(pair.first, y);
+                const float* rb = row_of(pair.second, y);
+                for (int x = 0; x < W + 3; ++x)
+                    ASSERT_NEAR(ra[x * kCell], rb[x * kCell], 2e-5)
+                        << "trial " << trial << " row " << y << " cell " << x;
+            }
+            std::fill(pair.first.acc, pair.first.acc + pair.cells, 0.0f);
+            std::fill(pair.second.acc, pair.second.acc + pair.cells, 0.0f);
+        }
+    }
+}
+
 TEST(RasterKernels, ShallowPiecesAcrossOneBorderAddTheCellsOfTheColumnWalk) {
     // In sparse (marked) bands, draw_line gives a shallow edge's row pieces that cross at most
     // one column border to the three-cell narrow piece; dense bands still walk the columns
