@@ -1031,11 +1031,12 @@ TEST(RasterKernels, DenseFloatBatchAddsTheDoublePairLoopsCellsWithinFloatRoundin
 }
 
 TEST(RasterKernels, DenseSteepSegmentsCutAtEveryRowAddTheCellsOfDrawLine) {
-    // A dense batch cuts a steep segment (|dx| ≤ |dy|) that crosses two row borders or more
-    // into one-row pieces for its narrow lanes (dense_steep), in float; draw_line's steep case
-    // in double is the reference. Long ones (up to 120 rows, several kSteepChunk chunks), short
-    // ones (two borders), both directions, ends on the band's left and right borders and just
-    // above row 0 (the direct route's excursions): every cell within float rounding of the
+    // A dense batch cuts a steep segment (|dx| ≤ |dy| ≤ kSteepPieceMaxDy) that crosses two row
+    // borders or more into one-row pieces for its narrow lanes (dense_steep), in float;
+    // draw_line's steep case in double is the reference. Segments of 2 to kSteepPieceMaxDy
+    // rows (a batch's pieces fill several kSteepChunk chunks) and some taller (set aside for
+    // draw_line), both directions, ends on the band's left and right borders and just above
+    // row 0 (the direct route's excursions): every cell within float rounding of the
     // reference, through the baseline batch (F4) and the AVX2 one when the CPU has it.
     using namespace raster_detail;
     const int W = 40, H = 120;
@@ -1048,9 +1049,10 @@ TEST(RasterKernels, DenseSteepSegmentsCutAtEveryRowAddTheCellsOfDrawLine) {
         BandPair pair(W, H, nullptr, nullptr);
         for (int trial = 0; trial < 300; ++trial) {
             SegmentBatch b;
-            const int n = 1 + static_cast<int>(u(rng) * 12);
+            const int n = 1 + static_cast<int>(u(rng) * 24);
             for (int q = 0; q < n; ++q) {
-                const double len = q % 3 == 0 ? 2.0 + u(rng) : 2.0 + u(rng) * (H - 3);
+                const double len = q % 4 == 3 ? 2.0 + u(rng) * (H - 3)
+                                              : 2.0 + u(rng) * (kSteepPieceMaxDy - 2.0);
                 double y0 = u(rng) * (H - len), y1 = y0 + len;
                 if (q % 5 == 0) y0 = -0.3 * u(rng);  // an excursion above row 0
                 double x0 = u(rng) * W;

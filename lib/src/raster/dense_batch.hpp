@@ -146,6 +146,11 @@ inline void dense_pieces(const Band& band, __m128* f, int n) {
 // Room for the row pieces of steep segments before they are drawn (a chunk; a segment may
 // have more rows than that and is then drawn in several chunks).
 inline constexpr int kSteepChunk = 32;
+// The tallest steep segment (in dy, px) cut into row pieces. Taller ones keep draw_line, whose
+// vector kernel adds a whole group of eight rows per instruction (draw_avx2.cpp): cutting
+// every steep segment cost 3 % more instructions at 64 px than this bound, with the same
+// count at 12 px (docs/perf-log.md).
+inline constexpr float kSteepPieceMaxDy = 8.0f;
 
 // A steep segment f (|dx| ≤ |dy|) that crosses two row borders or more, cut at every row
 // border into one-row pieces, each inside two columns (it moves ≤ 1 in x), queued in
@@ -194,11 +199,11 @@ inline void for_each_lane(int mask, At&& at) {
 // A segment inside one row and two columns is one narrow piece. One that crosses one row
 // border and moves at most 1 in x is listed and, after the others, cut there into two
 // narrow pieces, x at the border x₀ + (Y − y₀)·((x₁ − x₀)/(y₁ − y₀)). A longer one that stays
-// in one column (a stem) is listed and drawn by dense_stem; a longer steep one (|dx| ≤ |dy|)
-// is listed and cut at every row border by dense_steep into narrow pieces (one a row, about
-// 5 a segment at 12 px: a few lanes of narrow work each, where draw_line's double steep case
-// cost about 75 instructions a row there); anything else (wide shallow segments) is set
-// aside, widened to double, for draw_lines. Horizontal segments draw nothing and are dropped.
+// in one column (a stem) is listed and drawn by dense_stem; a longer steep one (|dx| ≤ |dy|,
+// |dy| ≤ kSteepPieceMaxDy) is listed and cut at every row border by dense_steep into narrow
+// pieces (one a row, about 5 a segment at 12 px: a few lanes of narrow work each, where
+// draw_line's double steep case cost about 75 instructions a row there); anything else (taller
+// steep segments, wide shallow ones) is set aside, widened to double, for draw_lines. Horizontal segments draw nothing and are dropped.
 // Order of the adds: the narrow pieces in segment order, then the cut ones segment after
 // segment (first piece, second piece), then the stems, then the steep ones' pieces, then the
 // set-aside ones.
@@ -211,7 +216,7 @@ void draw_dense_batch(const Band& band, SegmentBatch& b, int n) {
     int cut_idx[SegmentBatch::kSize + kLanes], stem_idx[SegmentBatch::kSize];
     int steep_idx[SegmentBatch::kSize];
     int ncut = 0, nslow = 0, nstem = 0, nsteep = 0;
-    const V one = L::set1(1.0f);
+    const V one = L::set1(1.0f), max_steep = L::set1(kSteepPieceMaxDy);
     // A short tail is padded with horizontal segments.
     for (int p = n; p < ((n + kLanes - 1) & ~(kLanes - 1)); ++p) f[p] = _mm_setzero_ps();
     for (int k = 0; k < n; k += kLanes) {
@@ -231,8 +236,10 @@ void draw_dense_batch(const Band& band, SegmentBatch& b, int n) {
                 L::cmp_le(L::sub(hi, lo), one));
             const int cuts = L::movemask(cut) & slow;
             const int stems = L::movemask(L::cmp_le(hi, X)) & slow & ~cuts;
-            const int steep =
-                L::movemask(L::cmp_le(L::sub(hi, lo), L::sub(yhi, ylo))) & slow & ~cuts & ~stems;
+            const V dy = L::sub(yhi, ylo);
+            const int steep = L::movemask(L::bit_and(L::cmp_le(L::sub(hi, lo), dy),
+                                                     L::cmp_le(dy, max_steep))) &
+                              slow & ~cuts & ~stems;
             for_each_lane(cuts, [&](int l) { cut_idx[ncut++] = k + l; });
             for_each_lane(stems, [&](int l) { stem_idx[nstem++] = k + l; });
             for_each_lane(steep, [&](int l) { steep_idx[nsteep++] = k + l; });
