@@ -243,8 +243,11 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     // points instead moves the curves by as little, but measured worse: DejaVu Sans 24 px's
     // worst pixel went from 1.53 to 2.16/255.) Farther out the path needs clipping: the
     // general route.
-    if (!(x0 >= -tol && y0 >= -tol && x1 <= W + tol && y1 <= H + tol)) return false;
-    const bool stray = !(x0 >= 0.0 && y0 >= 0.0 && x1 <= W && y1 <= H);
+    bool stray = false;
+    if (!(x0 >= 0.0 && y0 >= 0.0 && x1 <= W && y1 <= H)) {
+        if (!(x0 >= -tol && y0 >= -tol && x1 <= W + tol && y1 <= H + tol)) return false;
+        stray = true;
+    }
 
     // Edge budget, the cheap bound of path_fill.cpp: a cubic in a control box of diagonal D needs
     // at most ⌈√(1.5·D/tol)⌉ ≤ √(1.5·D/tol) + 1 steps, so with L = min(kMaxSegmentsPerCurve,
