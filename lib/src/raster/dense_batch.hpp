@@ -147,9 +147,8 @@ inline void dense_pieces(const Band& band, __m128* f, int n) {
 // have more rows than that and is then drawn in several chunks).
 inline constexpr int kSteepChunk = 32;
 // The tallest steep segment (in dy, px) cut into row pieces. Taller ones keep draw_line, whose
-// vector kernel adds a whole group of eight rows per instruction (draw_avx2.cpp): cutting
-// every steep segment cost 3 % more instructions at 64 px than this bound, with the same
-// count at 12 px (docs/perf-log.md).
+// vector kernel adds a whole group of eight rows per instruction (draw_avx2.cpp) and beats a
+// piece per row there (docs/perf-log.md).
 inline constexpr float kSteepPieceMaxDy = 8.0f;
 
 // A steep segment f (|dx| ≤ |dy|) that crosses two row borders or more, cut at every row
@@ -201,10 +200,10 @@ inline void for_each_lane(int mask, At&& at) {
 // narrow pieces, x at the border x₀ + (Y − y₀)·((x₁ − x₀)/(y₁ − y₀)). A longer one that stays
 // in one column (a stem) is listed and drawn by dense_stem; a longer steep one (|dx| ≤ |dy|,
 // |dy| ≤ kSteepPieceMaxDy) is listed and cut at every row border by dense_steep into narrow
-// pieces (one a row, about 5 a segment at 12 px: a few lanes of narrow work each, where
-// draw_line's double steep case cost about 75 instructions a row there); anything else (taller
-// steep segments, wide shallow ones) is set aside, widened to double, for draw_lines. Horizontal segments draw nothing and are dropped.
-// Order of the adds: the narrow pieces in segment order, then the cut ones segment after
+// pieces (one a row: a lane of the narrow work each, cheaper than a row of draw_line's double
+// steep case); anything else (taller steep segments, wide shallow ones) is set aside, widened
+// to double, for draw_lines. Horizontal segments draw nothing and are dropped. Order of the
+// adds: the narrow pieces in segment order, then the cut ones segment after
 // segment (first piece, second piece), then the stems, then the steep ones' pieces, then the
 // set-aside ones.
 // (Every dense box cuts, on every CPU: direct_fill.cpp has the measurements.)

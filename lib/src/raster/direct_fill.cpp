@@ -240,9 +240,8 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     // of a font's glyphs at 12 px, which the general route draws at about 2.5 times the cost).
     // Such a path takes the stored-point walk, whose vertices are clamped into the band on
     // both sides (DrawSink's kFloor): x exactly, y by less than 2·tol. (Clamping the control
-    // points instead moves the curves by as little, but measured worse: DejaVu Sans 24 px's
-    // worst pixel went from 1.53 to 2.16/255.) Farther out the path needs clipping: the
-    // general route.
+    // points instead moves the curves by as little, but the coverage error is larger:
+    // docs/perf-log.md.) Farther out the path needs clipping: the general route.
     bool stray = false;
     if (!(x0 >= 0.0 && y0 >= 0.0 && x1 <= W && y1 <= H)) {
         if (!(x0 >= -tol && y0 >= -tol && x1 <= W + tol && y1 <= H + tol)) return false;
