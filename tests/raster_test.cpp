@@ -390,6 +390,48 @@ TEST(RasterDirect, PathTouchingEveryTargetBorderStaysWithinTheTolerance) {
     }
 }
 
+TEST(RasterDirect, ControlPointsStrayingLessThanTheToleranceOutsideAreClampedWithinIt) {
+    // A glyph box from rounded coordinates (FreeType's 26.6 box) may miss the outline by up to
+    // 1/128 px: the route takes such a path (control points up to tol outside the target) and
+    // clamps its vertices into the band, x exactly and y by less than 2·tol, so coverage is
+    // within 2·tol of the exact clipped polyline's. Ellipses overshooting all four sides by
+    // 0.8·tol, in the dense (37 px) and marked (200 px) regimes, through the translated walk
+    // and the stored one (b = 1e-300 maps these points to the same doubles).
+    const double tol = kDefaultRasterTolerancePx, out = 0.8 * tol;
+    std::vector<float> acc;
+    std::vector<std::uint8_t> flags;
+    std::vector<Point> points;
+    for (const int w : {37, 200}) {
+        const int h = 23;
+        Path p;
+        const double k = 0.5523, cx = w / 2.0, cy = h / 2.0, rx = cx + out, ry = cy + out;
+        p.move_to({cx + rx, cy});
+        p.cubic_to({cx + rx, cy + k * ry}, {cx + k * rx, cy + ry}, {cx, cy + ry});
+        p.cubic_to({cx - k * rx, cy + ry}, {cx - rx, cy + k * ry}, {cx - rx, cy});
+        p.quad_to({cx - rx, cy - ry}, {cx, cy - ry});
+        p.line_to({cx + rx, cy - ry});
+        p.close();
+        for (const Affine& m : {Affine::identity(), Affine{1, 1e-300, 0, 1, 0, 0}}) {
+            for (FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
+                FloatImage f(w, h);
+                ASSERT_TRUE(raster_detail::fill_path_direct(p, m, rule, f.view(), tol,
+                                                            {acc, flags, points}));
+                const std::vector<double> ref =
+                    reference_coverage(balanced_polyline(p, m, tol), rule, w, h, {});
+                for (std::size_t i = 0; i < ref.size(); ++i)
+                    ASSERT_NEAR(f.px[i], ref[i], 2.0 * tol) << "w " << w << " pixel " << i;
+                // Farther out than tol the path needs clipping: the general route's.
+                Mask m8(w, h);
+                const Affine wider = Affine::translate({cx, cy}) *
+                                     Affine::scale((rx + 0.5 * tol) / rx) *
+                                     Affine::translate({-cx, -cy});
+                EXPECT_FALSE(raster_detail::fill_path_direct(p, wider * m, rule, m8.view(), tol,
+                                                             {acc, flags, points}));
+            }
+        }
+    }
+}
+
 TEST(RasterDirect, SteepEdgesInsideOneColumnMatchReference) {
     // Edges that stay in one pixel column over many rows take the per-row loop of draw_line:
     // fractional and integer ends, both directions, at the left border, inside, and on the last
@@ -989,6 +1031,56 @@ TEST(RasterKernels, DenseFloatBatchAddsTheDoublePairLoopsCellsWithinFloatRoundin
     EXPECT_LT(worst, 1e-4);
     EXPECT_GT(worst, 0.0);  // the float route is really taken: it rounds differently
     RecordProperty("worst_coverage_difference", std::to_string(worst));
+}
+
+TEST(RasterKernels, DenseSteepSegmentsCutAtEveryRowAddTheCellsOfDrawLine) {
+    // A dense batch cuts a steep segment (|dx| ≤ |dy| ≤ kSteepPieceMaxDy) that crosses two row
+    // borders or more into one-row pieces for its narrow lanes (dense_steep), in float;
+    // draw_line's steep case in double is the reference. Segments of 2 to kSteepPieceMaxDy
+    // rows (a batch's pieces fill several kSteepChunk chunks) and some taller (set aside for
+    // draw_line), both directions, ends on the band's left and right borders and just above
+    // row 0 (the direct route's excursions): every cell within float rounding of the
+    // reference, through the baseline batch (F4) and the AVX2 one when the CPU has it.
+    using namespace raster_detail;
+    const int W = 40, H = 120;
+    std::mt19937 rng(31337);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    BatchFn kernels[2] = {draw_dense_batch<F4>, nullptr};
+    if (const BatchKernels* k = avx2_batch_kernels()) kernels[1] = k->dense;
+    for (BatchFn kernel : kernels) {
+        if (kernel == nullptr) continue;
+        BandPair pair(W, H, nullptr, nullptr);
+        for (int trial = 0; trial < 300; ++trial) {
+            SegmentBatch b;
+            const int n = 1 + static_cast<int>(u(rng) * 24);
+            for (int q = 0; q < n; ++q) {
+                const double len = q % 4 == 3 ? 2.0 + u(rng) * (H - 3)
+                                              : 2.0 + u(rng) * (kSteepPieceMaxDy - 2.0);
+                double y0 = u(rng) * (H - len), y1 = y0 + len;
+                if (q % 5 == 0) y0 = -0.3 * u(rng);  // an excursion above row 0
+                double x0 = u(rng) * W;
+                double x1 = std::clamp(x0 + (2.0 * u(rng) - 1.0) * (y1 - y0), 0.0, double(W));
+                if (q % 7 == 0) x0 = q % 2 ? 0.0 : W;
+                if (std::fabs(x1 - x0) > y1 - y0) x1 = x0;  // steep (and so a stem) at worst
+                if (q % 2) std::swap(y0, y1), std::swap(x0, x1);
+                const __m128 f = _mm_setr_ps(float(x0), float(y0), float(x1), float(y1));
+                b.fseg[q] = f;
+                alignas(16) float e[4];
+                _mm_store_ps(e, f);  // the reference draws the float-rounded vertices
+                draw_line<false>(pair.first, e[0], e[1], e[2], e[3]);
+            }
+            kernel(pair.second, b, n);
+            for (int y = 0; y < H; ++y) {
+                const float* ra = row_of(pair.first, y);
+                const float* rb = row_of(pair.second, y);
+                for (int x = 0; x < W + 3; ++x)
+                    ASSERT_NEAR(ra[x * kCell], rb[x * kCell], 2e-5)
+                        << "trial " << trial << " row " << y << " cell " << x;
+            }
+            std::fill(pair.first.acc, pair.first.acc + pair.cells, 0.0f);
+            std::fill(pair.second.acc, pair.second.acc + pair.cells, 0.0f);
+        }
+    }
 }
 
 TEST(RasterKernels, ShallowPiecesAcrossOneBorderAddTheCellsOfTheColumnWalk) {

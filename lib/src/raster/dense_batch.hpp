@@ -128,6 +128,63 @@ inline void dense_stem(const Band& band, __m128 f) {
     }
 }
 
+// Narrow pieces f[0, n) (each inside one row and two columns), kLanes at a time, as the fast
+// lanes of draw_dense_batch. A short tail is padded with horizontal pieces at (0, 0), whose
+// three values are +0 and are added like the others (cheaper than a lane count test: fewer
+// instructions, measured). f has room for n + kLanes − 1.
+template <typename L>
+inline void dense_pieces(const Band& band, __m128* f, int n) {
+    constexpr int kLanes = L::kLanes;
+    for (int p = n; p < ((n + kLanes - 1) & ~(kLanes - 1)); ++p) f[p] = _mm_setzero_ps();
+    for (int k = 0; k < n; k += kLanes) {
+        DensePieces<L> v;
+        dense_narrow<L>(L::load(f + k), v);
+        for (int l = 0; l < kLanes; ++l) dense_add<L>(band, v, l);
+    }
+}
+
+// Room for the row pieces of steep segments before they are drawn (a chunk; a segment may
+// have more rows than that and is then drawn in several chunks).
+inline constexpr int kSteepChunk = 32;
+// The tallest steep segment (in dy, px) cut into row pieces. Taller ones keep draw_line, whose
+// vector kernel adds a whole group of eight rows per instruction (draw_avx2.cpp) and beats a
+// piece per row there (docs/perf-log.md).
+inline constexpr float kSteepPieceMaxDy = 8.0f;
+
+// A steep segment f (|dx| ≤ |dy|) that crosses two row borders or more, cut at every row
+// border into one-row pieces, each inside two columns (it moves ≤ 1 in x), queued in
+// `pieces` (count `np`, drawn by dense_pieces when kSteepChunk are queued). Row r's piece runs
+// from ya = max(y_lo, r) to yb = min(y_hi, r + 1) (row ⌊y_lo⌋ from y_lo even above 0, the
+// direct route's excursions), x at a border from the end point, x₀ + (y − y₀)·(dx/dy) (no
+// drift), clamped to the segment's x range against rounding; the piece keeps the segment's
+// direction (its winding sign). draw_line's steep case in float.
+template <typename L>
+inline void dense_steep(const Band& band, __m128 f, __m128* pieces, int& np) {
+    alignas(16) float e[4];
+    _mm_store_ps(e, f);
+    const float x0 = e[0], y0 = e[1], x1 = e[2], y1 = e[3];
+    const bool down = y1 > y0;
+    const float ylo = down ? y0 : y1, yhi = down ? y1 : y0;
+    const float xlo = std::min(x0, x1), xhi = std::max(x0, x1);
+    const float dxdy = (x1 - x0) / (y1 - y0);
+    const int j0 = static_cast<int>(ylo);  // floor: y > −1
+    int jl = static_cast<int>(yhi);        // the last row reached: ⌈yhi⌉ − 1
+    if (static_cast<float>(jl) == yhi) --jl;
+    float ya = ylo, xa = down ? x0 : x1;
+    for (int r = j0; r <= jl; ++r) {
+        const float yb = r == jl ? yhi : static_cast<float>(r + 1);
+        const float xb = r == jl ? (down ? x1 : x0)
+                                 : std::min(std::max(x0 + (yb - y0) * dxdy, xlo), xhi);
+        pieces[np++] = down ? _mm_setr_ps(xa, ya, xb, yb) : _mm_setr_ps(xb, yb, xa, ya);
+        if (np == kSteepChunk) {
+            dense_pieces<L>(band, pieces, np);
+            np = 0;
+        }
+        ya = yb;
+        xa = xb;
+    }
+}
+
 // Calls at(l) for each set bit l of mask, lowest first: as many steps as the lanes listed
 // (one or two of eight in a step, typically), where a test of every lane's bit took sixteen
 // instructions and as many branches per list per step.
@@ -141,11 +198,14 @@ inline void for_each_lane(int mask, At&& at) {
 // A segment inside one row and two columns is one narrow piece. One that crosses one row
 // border and moves at most 1 in x is listed and, after the others, cut there into two
 // narrow pieces, x at the border x₀ + (Y − y₀)·((x₁ − x₀)/(y₁ − y₀)). A longer one that stays
-// in one column (a stem) is listed and drawn by dense_stem; anything else (long steep or wide
-// segments) is set aside, widened to double, for draw_lines. Horizontal segments draw
-// nothing and are dropped. Order of the adds: the narrow pieces in segment order, then the cut
-// ones segment after segment (first piece, second piece), then the stems, then the set-aside
-// ones.
+// in one column (a stem) is listed and drawn by dense_stem; a longer steep one (|dx| ≤ |dy|,
+// |dy| ≤ kSteepPieceMaxDy) is listed and cut at every row border by dense_steep into narrow
+// pieces (one a row: a lane of the narrow work each, cheaper than a row of draw_line's double
+// steep case); anything else (taller steep segments, wide shallow ones) is set aside, widened
+// to double, for draw_lines. Horizontal segments draw nothing and are dropped. Order of the
+// adds: the narrow pieces in segment order, then the cut ones segment after
+// segment (first piece, second piece), then the stems, then the steep ones' pieces, then the
+// set-aside ones.
 // (Every dense box cuts, on every CPU: direct_fill.cpp has the measurements.)
 template <typename L>
 void draw_dense_batch(const Band& band, SegmentBatch& b, int n) {
@@ -153,8 +213,9 @@ void draw_dense_batch(const Band& band, SegmentBatch& b, int n) {
     constexpr int kLanes = L::kLanes, kAll = (1 << kLanes) - 1;
     __m128* const f = b.fseg;
     int cut_idx[SegmentBatch::kSize + kLanes], stem_idx[SegmentBatch::kSize];
-    int ncut = 0, nslow = 0, nstem = 0;
-    const V one = L::set1(1.0f);
+    int steep_idx[SegmentBatch::kSize];
+    int ncut = 0, nslow = 0, nstem = 0, nsteep = 0;
+    const V one = L::set1(1.0f), max_steep = L::set1(kSteepPieceMaxDy);
     // A short tail is padded with horizontal segments.
     for (int p = n; p < ((n + kLanes - 1) & ~(kLanes - 1)); ++p) f[p] = _mm_setzero_ps();
     for (int k = 0; k < n; k += kLanes) {
@@ -174,9 +235,14 @@ void draw_dense_batch(const Band& band, SegmentBatch& b, int n) {
                 L::cmp_le(L::sub(hi, lo), one));
             const int cuts = L::movemask(cut) & slow;
             const int stems = L::movemask(L::cmp_le(hi, X)) & slow & ~cuts;
+            const V dy = L::sub(yhi, ylo);
+            const int steep = L::movemask(L::bit_and(L::cmp_le(L::sub(hi, lo), dy),
+                                                     L::cmp_le(dy, max_steep))) &
+                              slow & ~cuts & ~stems;
             for_each_lane(cuts, [&](int l) { cut_idx[ncut++] = k + l; });
             for_each_lane(stems, [&](int l) { stem_idx[nstem++] = k + l; });
-            for_each_lane(slow & ~cuts & ~stems,
+            for_each_lane(steep, [&](int l) { steep_idx[nsteep++] = k + l; });
+            for_each_lane(slow & ~cuts & ~stems & ~steep,
                           [&](int l) { b.slow[nslow++] = widen(f[k + l]); });
             if (mask == 0) continue;
         }
@@ -208,6 +274,12 @@ void draw_dense_batch(const Band& band, SegmentBatch& b, int n) {
         }
     }
     for (int k = 0; k < nstem; ++k) dense_stem<L>(band, f[stem_idx[k]]);
+    if (nsteep > 0) {
+        alignas(16) __m128 pieces[kSteepChunk + kLanes];
+        int np = 0;
+        for (int k = 0; k < nsteep; ++k) dense_steep<L>(band, f[steep_idx[k]], pieces, np);
+        dense_pieces<L>(band, pieces, np);
+    }
     batch_detail::draw_lines<false>(band, b.slow, nslow);
 }
 

@@ -20,10 +20,14 @@ namespace {
 // Receives the balanced walk and draws each segment, closing every contour.
 //
 // Vertices lie within 2/3·tol of the control box (curve points lie in it; a balanced vertex is
-// moved by |Δ²|/12 ≤ 8·tol/12), so with tol ≤ kDirectMaxTolerancePx a coordinate is > −1/3.
-// Below 0 needs no clamp: draw_line's int conversion truncates toward zero, so such a point
-// lands in column / row 0 as if it were at 0 (within its excursion). Above the band it must be
-// clamped: x to the width (exact, accumulate.hpp), y to the rows (moves it by < tol).
+// moved by |Δ²|/12 ≤ 8·tol/12). Above the band a vertex must be clamped: x to the width (exact,
+// accumulate.hpp), y to the rows (moves it by < tol). Below 0 it is clamped with kFloor, which
+// the stored-point walks set: their control points may lie up to tol outside the band
+// (fill_path_direct's slack), so x is clamped to 0 (exact) and y to 0 (a move of < 2·tol; the
+// part of the outline above the target is not drawn into row 0). Without kFloor (translated
+// paths, whose control points are inside the band) a coordinate is > −1/3 and needs no clamp:
+// draw_line's int conversion truncates toward zero, so such a point lands in column / row 0
+// as if it were at 0 (within its excursion), one instruction a vertex saved.
 //
 // Segments are queued and drawn a SegmentBatch at a time (draw_batch.hpp) rather than one
 // draw_line call per vertex: a call in the middle of the flattening loop makes the caller spill
@@ -36,7 +40,7 @@ namespace {
 // stores, which may alias anything, and into a member array they would make the compiler
 // reload `queued` and `cur` from the sink after every push (one store-to-load chain through the
 // walk); into another object they cannot touch the sink's fields.
-template <bool kMark, bool kSplit>
+template <bool kMark, bool kSplit, bool kFloor>
 struct DrawSink {
     static_assert(kMark || kSplit, "a dense band always cuts (draw_dense_batch)");
     DrawSink(const Band& b, SegmentBatch& q, BatchFn four)
@@ -53,8 +57,13 @@ struct DrawSink {
     __m128 first_f = _mm_setzero_ps(), cur_f = _mm_setzero_ps();
     int queued = 0;
 
-    // min(x, width), min(y, rows); the points are finite (fill_path_direct checked).
-    __m128d clamp(V2 p) const { return _mm_min_pd(p.v, wh); }
+    // min(x, width), min(y, rows), and with kFloor max(·, 0); the points are finite
+    // (fill_path_direct checked).
+    __m128d clamp(V2 p) const {
+        const __m128d q = _mm_min_pd(p.v, wh);
+        if constexpr (kFloor) return _mm_max_pd(q, _mm_setzero_pd());
+        return q;
+    }
     void push(__m128d a, __m128d b) {
         batch.seg[queued] = {a, b};
         if (++queued == SegmentBatch::kSize) flush();
@@ -122,12 +131,13 @@ struct DrawSink {
 // transform moves by `offset`; `shift` is the band's top-left pixel, `four` the AVX2 batch
 // kernels (kernel_table().batch, or null). With kTranslate a point is (p + offset) − shift,
 // the value the stored transform gives (1·x + 0·y + e = x + e exactly), so both produce the
-// same polyline bit for bit.
+// same polyline bit for bit; the stored points' walk also clamps vertices at 0 (DrawSink's
+// kFloor), which changes the band only where a vertex lies above or left of it.
 template <bool kMark, bool kSplit, bool kTranslate>
 void draw_path(const Path& path, const Point* points, V2 offset, V2 shift, double tol,
                const Band& band, const BatchKernels* four) {
     SegmentBatch batch;
-    DrawSink<kMark, kSplit> sink(
+    DrawSink<kMark, kSplit, !kTranslate> sink(
         band, batch, four == nullptr ? nullptr : kMark ? four->marked[kSplit] : four->dense);
     walk_balanced(path.verbs(), tol,
                   [points, offset, shift](std::size_t i, V2& p) {
@@ -223,7 +233,18 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     if (_mm_movemask_pd(nan) != 0) return false;
     const double x0 = _mm_cvtsd_f64(lo), y0 = _mm_cvtsd_f64(_mm_unpackhi_pd(lo, lo));
     const double x1 = _mm_cvtsd_f64(hi), y1 = _mm_cvtsd_f64(_mm_unpackhi_pd(hi, hi));
-    if (!(x0 >= 0.0 && y0 >= 0.0 && x1 <= W && y1 <= H)) return false;  // needs clipping
+    // Control points may stray past the target by up to tol: a box from rounded coordinates,
+    // FreeType's 26.6 control box among them, misses the outline's own by up to 1/128 px (5-6 %
+    // of a font's glyphs at 12 px, which the general route draws at about 2.5 times the cost).
+    // Such a path takes the stored-point walk, whose vertices are clamped into the band on
+    // both sides (DrawSink's kFloor): x exactly, y by less than 2·tol. (Clamping the control
+    // points instead moves the curves by as little, but the coverage error is larger:
+    // docs/perf-log.md.) Farther out the path needs clipping: the general route.
+    bool stray = false;
+    if (!(x0 >= 0.0 && y0 >= 0.0 && x1 <= W && y1 <= H)) {
+        if (!(x0 >= -tol && y0 >= -tol && x1 <= W + tol && y1 <= H + tol)) return false;
+        stray = true;
+    }
 
     // Edge budget, the cheap bound of path_fill.cpp: a cubic in a control box of diagonal D needs
     // at most ⌈√(1.5·D/tol)⌉ ≤ √(1.5·D/tol) + 1 steps, so with L = min(kMaxSegmentsPerCurve,
@@ -238,15 +259,18 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     const double diagonal2 = (x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0);
     if (!(limit >= 2.0 && diagonal2 <= bound * bound)) return false;
 
-    // The pixel box: 0 ≤ x0 ≤ x1 ≤ W here (and so for y), so ⌊·⌋ and ⌈·⌉ are int conversions
-    // (SSE2 has no rounding instruction: std::floor / std::ceil are long sequences, measured
-    // the hottest line left in a fill's setup).
+    // The pixel box of the clamped points: −tol ≤ x0 ≤ x1 ≤ W + tol here (and so for y), with
+    // tol < 1, so ⌊·⌋ and ⌈·⌉ are int conversions, truncation taking a coordinate in (−1, 0) to
+    // 0 as the clamp does, and ⌈·⌉ capped at the target's edge as the clamp does (SSE2 has no
+    // rounding instruction: std::floor / std::ceil are long sequences, measured the hottest
+    // line left in a fill's setup).
     const auto floor_int = [](double v) { return static_cast<int>(v); };
     const auto ceil_int = [](double v) {
         const int i = static_cast<int>(v);
         return i + (static_cast<double>(i) < v);
     };
-    const int bx0 = floor_int(x0), bx1 = ceil_int(x1), by0 = floor_int(y0), by1 = ceil_int(y1);
+    const int bx0 = floor_int(x0), bx1 = std::min(ceil_int(x1), W);
+    const int by0 = floor_int(y0), by1 = std::min(ceil_int(y1), H);
     if (bx0 >= bx1 || by0 >= by1) return false;  // no area: the general route clears
     const int box_w = bx1 - bx0, box_h = by1 - by0;
     const std::ptrdiff_t stride = group_cells(box_w), flag_stride = row_flag_bytes(box_w);
@@ -257,14 +281,16 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     float* const acc = band_cells(scratch.acc, cells);
     if (scratch.flags.size() < flags) scratch.flags.resize(flags, 0);
 
-    if (!translate && !fits) {
-        tp.resize(src.size());  // the largest path so far
+    // Stored points: a general transform's, or a translated path's that strays.
+    const bool stored = !translate || stray;
+    if (stored && !(fits && !translate)) {
+        if (!fits) tp.resize(src.size());  // the largest path so far
         transform_points<true>(src, m, tp.data(), lo, hi, nan);
     }
     clear_outside_box(target, bx0, bx1, by0, by1);
     const V2 shift{_mm_set_pd(static_cast<double>(by0), static_cast<double>(bx0))};
     const V2 offset{_mm_set_pd(m.f, m.e)};
-    const Point* const points = translate ? src.data() : tp.data();
+    const Point* const points = stored ? tp.data() : src.data();
     const KernelTable& kernels = kernel_table();
     const Band band{acc, scratch.flags.data(), stride, flag_stride, box_w, box_h,
                     kernels.steep};
@@ -272,7 +298,7 @@ bool fill_path_direct(const Path& path, const Affine& m, FillRule rule, const Vi
     // draw_path for a band mode, with the point source (stored or translated) chosen here.
     const auto draw = [&](auto mark, auto split) {
         constexpr bool kMark = decltype(mark)::value, kSplit = decltype(split)::value;
-        if (translate)
+        if (!stored)
             draw_path<kMark, kSplit, true>(path, points, offset, shift, tol, band, four);
         else
             draw_path<kMark, kSplit, false>(path, points, offset, shift, tol, band, four);

@@ -2,10 +2,12 @@
 // band (no Polylines round trip, no per-point bounds pass, no clipping per segment).
 //
 // It applies to the common case of a glyph drawn into a target that holds it: every transformed
-// control point inside the target (so no clipping: the curves lie in their control points'
-// convex hull), one band, and the edge budget met by the cheap bound of path_fill.cpp. Anything
-// else returns false with the target untouched, and fill_path takes the general route
-// (flatten_balanced + fill), which also reports every error.
+// control point inside the target or less than the flattening tolerance outside it (so no
+// clipping: the curves lie in their control points' convex hull, and the vertices of a path
+// that strays are clamped into the target, which moves the outline by less than 2·tol), one
+// band, and the edge budget met by the cheap bound of path_fill.cpp. Anything else returns
+// false with the target untouched, and fill_path takes the general route (flatten_balanced +
+// fill), which also reports every error.
 //
 // The polyline is the one flatten_balanced makes (the same walk, render_flatten.hpp), so the
 // coverage equals the general route's up to float rounding of the band-relative coordinates.
