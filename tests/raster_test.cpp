@@ -329,6 +329,67 @@ TEST(RasterDirect, FillPathMatchesReferenceAndGeneralRouteOnRandomCurvedPaths) {
     RecordProperty("worst_float_error", std::to_string(worst_f));
 }
 
+// A circle of four cubics (the usual 0.5523 handle), counter-clockwise on screen (y down)
+// when `ccw`, else clockwise.
+void add_circle(Path& p, double cx, double cy, double r, bool ccw) {
+    const double k = 0.5523 * r, s = ccw ? -1.0 : 1.0;
+    p.move_to({cx + r, cy});
+    p.cubic_to({cx + r, cy + s * k}, {cx + k, cy + s * r}, {cx, cy + s * r});
+    p.cubic_to({cx - k, cy + s * r}, {cx - r, cy + s * k}, {cx - r, cy});
+    p.cubic_to({cx - r, cy - s * k}, {cx - k, cy - s * r}, {cx, cy - s * r});
+    p.cubic_to({cx + k, cy - s * r}, {cx + r, cy - s * k}, {cx + r, cy});
+    p.close();
+}
+
+TEST(RasterDirect, SparseBandsWriteEveryPixelOfNestedRingsAndManyContours) {
+    // Wide boxes take the marked regime, whose sweep writes each pixel exactly once (runs and
+    // summed blocks, no clearing pass): targets start as garbage (0xAB, NaN) and every pixel
+    // must end as the reference's. Nested rings of alternating orientation (non-zero: rings;
+    // even-odd: every other annulus), among many small circles, give runs of coverage 0, 1
+    // and 2 between blocks; the last case is a box 16384 px wide, edges at the target's far
+    // end. Within the direct route's usual bounds: 1/255 (8-bit) and kFloatTol.
+    std::mt19937 rng(3434);
+    Rasterizer r;
+    const double tol = kDefaultRasterTolerancePx;
+    for (int trial = 0; trial < 8; ++trial) {
+        const bool huge = trial == 7;
+        const int w = huge ? kMaxBitmapDim : 120 + static_cast<int>(rng() % 480);
+        const int h = huge ? 20 : 20 + static_cast<int>(rng() % 80);
+        std::uniform_real_distribution<double> ux(1.0, w - 1.0), uy(1.0, h - 1.0);
+        Path p;
+        const double cx = w / 2.0, cy = h / 2.0, rmax = std::min(w, h) / 2.0 - 1.0;
+        for (int ring = 0; ring < 5; ++ring)
+            add_circle(p, cx, cy, rmax * (1.0 - 0.18 * ring), ring % 2 == 1 || trial % 3 == 0);
+        for (int c = 0; c < 30; ++c) {
+            const double x = ux(rng), y = uy(rng);
+            const double rc = std::min({x, w - x, y, h - y, 6.0}) - 0.5;
+            if (rc > 0.2) add_circle(p, x, y, rc, rng() % 2 == 0);
+        }
+        if (huge) {  // a sliver along the whole width: edges from x = 0.5 to 16383.5
+            p.move_to({0.5, 2.0});
+            p.quad_to({w / 2.0, 0.5}, {w - 0.5, 2.0});
+            p.line_to({w - 0.5, 17.5});
+            p.close();
+        }
+        for (const FillRule rule : {FillRule::NonZero, FillRule::EvenOdd}) {
+            const Polylines lines = balanced_polyline(p, Affine{}, tol);
+            Mask m(w, h, 0xAB);
+            FloatImage f(w, h);
+            std::fill(f.px.begin(), f.px.end(), std::numeric_limits<float>::quiet_NaN());
+            ASSERT_TRUE(r.fill_path(p, Affine{}, m.view(), {rule}).ok());
+            ASSERT_TRUE(r.fill_path(p, Affine{}, f.view(), {rule}).ok());
+            const std::vector<double> ref = reference_coverage(lines, rule, w, h, {});
+            const std::vector<unsigned char> ref8 = reference_u8(lines, rule, w, h, {});
+            for (std::size_t i = 0; i < ref.size(); ++i) {
+                ASSERT_LE(std::abs(int(m.pixels()[i]) - int(ref8[i])), 1)
+                    << "trial " << trial << " pixel " << i % w << ", " << i / w;
+                ASSERT_NEAR(f.px[i], ref[i], kFloatTol)
+                    << "trial " << trial << " pixel " << i % w << ", " << i / w;
+            }
+        }
+    }
+}
+
 TEST(RasterDirect, TranslationsDrawTheStoredTransformsCoverageBitForBit) {
     // A translation (the identity included) is not stored: the walk adds (e, f) to the path's
     // own points. b = 1e-300 is not a translation, so that transform is stored, yet it maps

@@ -80,6 +80,11 @@ struct Sse2Block {
         zero_stores(acc, std::make_integer_sequence<int, kBlock * kGroupRows / 4>{});
     }
 
+    template <FillRule R, typename Out>
+    static void fill(Carry c, Out* out, std::ptrdiff_t os, int rows, int x, int end, Out* value) {
+        values<R>(c, value);
+        fill_group_run(out, os, rows, x, end, value);
+    }
     template <FillRule R>
     static void values(Carry c, std::uint8_t* v) {
         const __m128i w = coverage_words<R>(c);

@@ -95,6 +95,47 @@ struct Avx2Block {
     static Carry zero() { return _mm256_setzero_ps(); }
     static void clear(float* acc) { zero_block(acc); }
 
+    // A run of 8-bit coverage, zero or not: each row's value broadcast in a register (every
+    // 64-bit lane of bb holds the eight row values, so a byte shuffle by index r spreads value r
+    // over the vector), then the stores of fill_group_run without its stack copies of the
+    // values (a store and reload per row and run). Runs under 16 pixels (only a row's last
+    // one: the others end at block borders) go through fill_group_run.
+    template <FillRule R>
+    static void fill(Carry c, std::uint8_t* out, std::ptrdiff_t os, int rows, int x, int end,
+                     std::uint8_t*) {
+        const __m256i q = coverage8_u8<R>(c);
+        const __m128i w = _mm_packs_epi32(_mm256_castsi256_si128(q), _mm256_extracti128_si256(q, 1));
+        const __m128i b = _mm_packus_epi16(w, w);
+        const __m256i bb = _mm256_broadcastq_epi64(b);
+        const int len = end - x;
+        if (len >= 2 * kBlock) {
+            for (int r = 0; r < rows; ++r) {
+                const __m256i v = _mm256_shuffle_epi8(bb, _mm256_set1_epi8(static_cast<char>(r)));
+                std::uint8_t* row = out + r * os;
+                for (int p = x; p + 2 * kBlock < end; p += 2 * kBlock)
+                    _mm256_storeu_si256(reinterpret_cast<__m256i*>(row + p), v);
+                _mm256_storeu_si256(reinterpret_cast<__m256i*>(row + end - 2 * kBlock), v);
+            }
+        } else if (len >= kBlock) {
+            for (int r = 0; r < rows; ++r) {
+                const __m128i v = _mm256_castsi256_si128(
+                    _mm256_shuffle_epi8(bb, _mm256_set1_epi8(static_cast<char>(r))));
+                std::uint8_t* row = out + r * os;
+                _mm_storeu_si128(reinterpret_cast<__m128i*>(row + x), v);
+                _mm_storeu_si128(reinterpret_cast<__m128i*>(row + end - kBlock), v);
+            }
+        } else {
+            alignas(8) std::uint8_t value[kGroupRows];
+            _mm_storel_epi64(reinterpret_cast<__m128i*>(value), b);
+            fill_group_run(out, os, rows, x, end, value);
+        }
+    }
+    template <FillRule R>
+    static void fill(Carry c, float* out, std::ptrdiff_t os, int rows, int x, int end,
+                     float* value) {
+        values<R>(c, value);
+        fill_group_run(out, os, rows, x, end, value);
+    }
     template <FillRule R>
     static void values(Carry c, std::uint8_t* v) {
         const __m256i q = coverage8_u8<R>(c);

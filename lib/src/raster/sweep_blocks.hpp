@@ -5,6 +5,9 @@
 //   Carry zero()
 //   void values<R>(Carry, Out v[8])
 //                                each row's coverage of its running sum (the value of a run)
+//   void fill<R>(Carry, Out* out, ptrdiff_t out_stride, int rows, int x, int end, Out* scratch)
+//                                writes the run [x, end) of rows [0, rows) with those values
+//                                (fill_group_run's contract; `scratch` holds 8 values)
 //   void sum<R>(float* acc, Carry&, Out* out, ptrdiff_t out_stride, int count, int rows)
 //                                prefix-sums kBlock columns (column-major, eight rows each),
 //                                zeroes them, writes columns [0, count) (1..kBlock) of output
@@ -43,16 +46,13 @@ inline void copy_bytes(std::uint8_t* out, const std::uint8_t* src, int count) {
         copy_tail(out, src, count);
 }
 
-// The group's runs [x, end) of constant coverage, one value per row; rows of value 0 are left
-// as they are (sweep_group cleared them). Bytes: the same stores for every row (a row of value 0
-// gets zeros again), so the only branches are per run, not per row: nothing to do when all eight
-// values are 0; else 32-byte stores with the last one ending at `end`, or 16-byte ones for
-// shorter runs, pieces below 16.
+// The group's runs [x, end) of constant coverage, one value per row, zero or not (the rows are
+// not cleared beforehand: every output pixel is written once, by a run or by a block's sum).
+// Bytes: the same stores for every row, so the only branches are per run, not per row: 32-byte
+// stores with the last one ending at `end`, or 16-byte ones for shorter runs, pieces below 16.
+// No store leaves [x, end).
 inline void fill_group_run(std::uint8_t* out, std::ptrdiff_t out_stride, int rows, int x, int end,
                            const std::uint8_t* value) {
-    std::uint64_t any;
-    std::memcpy(&any, value, 8);
-    if (any == 0) return;
     const int len = end - x;
     std::uint8_t v[kGroupRows][2 * kBlock];
     for (int r = 0; r < kGroupRows; ++r) std::memset(v[r], value[r], sizeof v[r]);
@@ -74,26 +74,24 @@ inline void fill_group_run(float* out, std::ptrdiff_t out_stride, int rows, int 
                            const float* value) {
     for (int r = 0; r < rows; ++r) {
         float* row = out + r * out_stride;
-        if (value[r] != 0.0f) std::fill(row + x, row + end, value[r]);
+        std::fill(row + x, row + end, value[r]);
     }
 }
 
-// The sparse group: marked blocks are summed, the runs between them filled. The group's rows
-// are cleared first (one memset a row) and runs of coverage 0 in all eight rows then skipped:
-// outside the glyph and in its counters most runs are empty, and a memset of the whole row
-// writes them faster than run-by-run stores (docs/perf-log.md). A skipped run writes nothing,
-// so no run may rely on the next block overwriting a spill past its end. The marked blocks
-// are found eight flags at a time (a little-endian word of 0/1 bytes has a set bit at 8k for
-// each marked block k, so ctz / 8 is the next one and word & (word − 1) drops it), which costs
-// no branch per unmarked block: at large sizes a row is mostly runs. Guard blocks past the
-// row's last pixel hold deltas of pieces at x ≈ n but no pixels: they are only cleared.
+// The sparse group: marked blocks are summed, the runs between them filled, and every output
+// pixel written exactly once, so the rows need no clearing first and a run of coverage 0 costs
+// its stores and nothing more (a memset of every row before the fill wrote the glyph's interior
+// and edges twice). The marked blocks are found eight flags at a time (a little-endian word of
+// 0/1 bytes has a set bit at 8k for each marked block k, so ctz / 8 is the next one and
+// word & (word − 1) drops it), which costs no branch per unmarked block: at large sizes a row is
+// mostly runs. Guard blocks past the row's last pixel hold deltas of pieces at x ≈ n but no
+// pixels: they are only cleared.
 template <typename Block, FillRule R, typename Out>
 inline void sweep_group(float* acc, std::uint8_t* flags, int n, int rows, Out* out,
                         std::ptrdiff_t out_stride) {
     const int words = row_flag_bytes(n) >> 3;
     typename Block::Carry carry = Block::zero();
     Out value[kGroupRows];
-    for (int r = 0; r < rows; ++r) std::memset(out + r * out_stride, 0, sizeof(Out) * n);
     int x = 0;  // pixels [0, x) of each row are written
     for (int w = 0; w < words; ++w) {
         std::uint64_t word;
@@ -109,19 +107,13 @@ inline void sweep_group(float* acc, std::uint8_t* flags, int n, int rows, Out* o
                 Block::clear(cells);
                 continue;
             }
-            if (x0 > x) {
-                Block::template values<R>(carry, value);
-                fill_group_run(out, out_stride, rows, x, x0, value);
-            }
+            if (x0 > x) Block::template fill<R>(carry, out, out_stride, rows, x, x0, value);
             Block::template sum<R>(cells, carry, out + x0, out_stride, std::min(n - x0, kBlock),
                                    rows);
             x = x0 + kBlock;
         } while (word != 0);
     }
-    if (x < n) {
-        Block::template values<R>(carry, value);
-        fill_group_run(out, out_stride, rows, x, n, value);
-    }
+    if (x < n) Block::template fill<R>(carry, out, out_stride, rows, x, n, value);
 }
 
 // The dense band: every block of every group summed (no flags); the guard cells past the last
