@@ -36,6 +36,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench_common.hpp"
 #include "bezel/diagnostics.hpp"
 #include "bezel/font.hpp"
 #include "bezel/glyph.hpp"
@@ -43,12 +44,8 @@
 
 namespace {
 
-// CPU time of this thread (see bench_raster: the machine is shared).
-double thread_ns() {
-    timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) * 1e9 + double(ts.tv_nsec);
-}
+using bench::parse_sizes;
+using bench::thread_ns;
 
 double wall_ns() {
     return std::chrono::duration<double, std::nano>(
@@ -190,19 +187,6 @@ void time_two_threads(std::vector<std::pair<Contender*, std::function<void(int)>
             const double ns = run(c->passes, half) / (double(c->passes) * double(glyphs));
             c->best = c->best < 0 ? ns : std::min(c->best, ns);
         }
-}
-
-std::vector<int> parse_sizes(const std::string& s) {
-    std::vector<int> out;
-    std::size_t i = 0;
-    while (i < s.size()) {
-        std::size_t j = s.find(',', i);
-        if (j == std::string::npos) j = s.size();
-        const int v = std::atoi(s.substr(i, j - i).c_str());
-        if (v > 0 && v <= 4096) out.push_back(v);
-        i = j + 1;
-    }
-    return out;
 }
 
 }  // namespace

@@ -42,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_common.hpp"
 #include "bezel/diagnostics.hpp"
 #include "bezel/font.hpp"
 #include "bezel/glyph.hpp"
@@ -65,13 +66,8 @@
 
 namespace {
 
-// CPU time of this thread, not wall time: the benchmark machine is shared (others compile on
-// it), and preemption would otherwise be billed to whichever renderer happened to be running.
-double thread_ns() {
-    timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) * 1e9 + double(ts.tv_nsec);
-}
+using bench::parse_sizes;
+using bench::thread_ns;
 
 // One glyph at one size. The box is FreeType's (GlyphBoxMode::FreeType: the 26.6 control box,
 // floor/ceil), the same A8 target for every renderer.
@@ -297,19 +293,6 @@ struct ErrorStats {
     void add(double e) { sum += e; max = std::max(max, e); ++n; }
     double mean() const { return n ? sum / double(n) : 0.0; }
 };
-
-std::vector<int> parse_sizes(const std::string& s) {
-    std::vector<int> out;
-    std::size_t i = 0;
-    while (i < s.size()) {
-        std::size_t j = s.find(',', i);
-        if (j == std::string::npos) j = s.size();
-        int v = std::atoi(s.substr(i, j - i).c_str());
-        if (v > 0 && v <= 4096) out.push_back(v);
-        i = j + 1;
-    }
-    return out;
-}
 
 }  // namespace
 
