@@ -28,6 +28,49 @@ Status check_target(const View& t) {
     return ok_status();
 }
 
+// Subpixels the LCD filter (lcd.cpp, five taps) reads beyond each side of a target: an LCD
+// fill samples a target this much wider on each side, which must stay within kMaxBitmapDim.
+inline constexpr int kLcdFilterReach = 2;
+
+// An LCD target every fill accepts: its samples within kMaxBitmapDim, whole display pixels of
+// 3 bytes, memory when not empty. The errors name the size.
+inline Status check_lcd_target(const MaskView& t) {
+    const int W = t.width, H = t.height;
+    if (W < 0 || H < 0 || W > kMaxBitmapDim - 2 * kLcdFilterReach || H > kMaxBitmapDim)
+        return Error{"LCD target " + std::to_string(W) + "x" + std::to_string(H) +
+                     " is outside 0.." + std::to_string(kMaxBitmapDim - 2 * kLcdFilterReach) +
+                     "x" + std::to_string(kMaxBitmapDim) +
+                     " (the bitmap limit less the filter's reach)"};
+    if (W % 3 != 0)
+        return Error{"LCD target width " + std::to_string(W) +
+                     " is not a multiple of 3 (3 bytes per display pixel)"};
+    if (t.data == nullptr && W > 0 && H > 0)
+        return Error{"LCD target " + std::to_string(W) + "x" + std::to_string(H) +
+                     " has no pixel memory (null data)"};
+    return ok_status();
+}
+
+// The tolerance a fill flattens with (at least kMinFlattenTolerancePx), and whether it takes
+// the balanced walk (render_flatten.hpp): WangUniform at a positive, finite tolerance.
+inline double flatten_tolerance(const FlattenOptions& o) {
+    return std::max(o.tolerance_px, kMinFlattenTolerancePx);
+}
+inline bool balanced_flattening(const FlattenOptions& o) {
+    return o.method == FlattenMethod::WangUniform && o.tolerance_px > 0.0 &&
+           std::isfinite(o.tolerance_px);
+}
+
+// `transform` with `origin` folded into its translation, so a path filled with an origin gives
+// the bits of the same path under the moved transform. A zero origin leaves it as it is.
+inline Affine moved_by(const Affine& transform, Vec2 origin) {
+    Affine m = transform;
+    if (origin.x != 0.0 || origin.y != 0.0) {
+        m.e += origin.x;
+        m.f += origin.y;
+    }
+    return m;
+}
+
 // Integer pixel range [lo, hi) of [a, b] + offset clamped to [0, n]. Computed in double: a
 // coordinate of 1e300 clamps before any conversion to int.
 inline void pixel_range(double a, double b, double offset, int n, int& lo, int& hi) {

@@ -24,53 +24,18 @@ namespace bezel {
 
 namespace {
 
-// Subpixels the LCD filter reads beyond each side of a target (lcd.cpp's kFilterReach): an LCD
-// target's samples are this much wider on each side, and must stay within kMaxBitmapDim.
-constexpr int kLcdSampleReach = 2;
-
 std::string job_label(std::size_t k) { return "fill_paths: job " + std::to_string(k) + ": "; }
 
 // What fill_path would refuse in job `job` before looking at its path, or ok.
 Status check_job(const FillJob& job, const FillOptions& options) {
     if (job.path == nullptr) return Error{"path is null"};
-    const MaskView& t = job.target;
-    if (options.format == CoverageFormat::Lcd) {
-        if (t.width % 3 != 0)
-            return Error{"LCD target width " + std::to_string(t.width) +
-                         " is not a multiple of 3 (3 bytes per display pixel)"};
-        if (t.width > kMaxBitmapDim - 2 * kLcdSampleReach)
-            return Error{"LCD target " + std::to_string(t.width) + "x" + std::to_string(t.height) +
-                         " is outside 0.." + std::to_string(kMaxBitmapDim - 2 * kLcdSampleReach) +
-                         "x" + std::to_string(kMaxBitmapDim) +
-                         " (the bitmap limit less the filter's reach)"};
-    }
-    if (Status s = raster_detail::check_target(t); !s) return s;
+    if (Status s = options.format == CoverageFormat::Lcd ? raster_detail::check_lcd_target(job.target)
+                                                         : raster_detail::check_target(job.target);
+        !s)
+        return s;
     if (!job.origin.is_finite()) return Error{"raster origin is not finite (NaN or infinity)"};
     if (!job.transform.is_finite()) return Error{"transform is not finite"};
     return ok_status();
-}
-
-// check_job's verdict without building a Status for a valid job (the test every job takes);
-// false exactly when check_job names an error.
-bool job_is_valid(const FillJob& job, const FillOptions& options) {
-    const MaskView& t = job.target;
-    if (job.path == nullptr || t.width < 0 || t.height < 0 || t.width > kMaxBitmapDim ||
-        t.height > kMaxBitmapDim || (t.data == nullptr && t.width > 0 && t.height > 0))
-        return false;
-    if (options.format == CoverageFormat::Lcd &&
-        (t.width % 3 != 0 || t.width > kMaxBitmapDim - 2 * kLcdSampleReach))
-        return false;
-    return job.origin.is_finite() && job.transform.is_finite();
-}
-
-// The transform with the job's origin in its translation: fill_path's moved_by, the same bits.
-Affine placed(const FillJob& job) {
-    Affine m = job.transform;
-    if (job.origin.x != 0.0 || job.origin.y != 0.0) {
-        m.e += job.origin.x;
-        m.f += job.origin.y;
-    }
-    return m;
 }
 
 }  // namespace
@@ -89,24 +54,22 @@ Status Rasterizer::fill_paths(const FillJob* jobs, std::size_t count, const Fill
         return fail(count, "fill_paths: FillOptions::origin must be zero (each FillJob carries "
                            "its origin)");
     for (std::size_t k = 0; k < count; ++k) {
-        if (job_is_valid(jobs[k], options)) continue;
         if (Status s = check_job(jobs[k], options); !s)
             return fail(k, job_label(k) + s.error().message);
     }
 
     // The plain fill (what glyph atlases ask for): each job tries the direct route and falls back
     // to the general one, as fill_path_impl does, without fill_path's per-call dispatch.
-    const double tol = std::max(options.flatten.tolerance_px, kMinFlattenTolerancePx);
-    const bool lcd = options.format == CoverageFormat::Lcd;
     const FlattenOptions& flatten = options.flatten;
-    const bool balanced = flatten.method == FlattenMethod::WangUniform &&
-                          flatten.tolerance_px > 0.0 && std::isfinite(flatten.tolerance_px);
+    const double tol = raster_detail::flatten_tolerance(flatten);
+    const bool lcd = options.format == CoverageFormat::Lcd;
+    const bool balanced = raster_detail::balanced_flattening(flatten);
     if (balanced && !lcd && options.overlap == OverlapMode::Accumulate &&
         options.combine == CoverageCombine::Replace) {
         const raster_detail::DirectScratch scratch{acc_, flags_, flattened_.points};
         for (std::size_t k = 0; k < count; ++k) {
             const FillJob& job = jobs[k];
-            const Affine m = placed(job);
+            const Affine m = raster_detail::moved_by(job.transform, job.origin);
             if (raster_detail::fill_path_direct(*job.path, m, options.rule, job.target, tol,
                                                 scratch))
                 continue;

@@ -24,13 +24,14 @@
 #include <string>
 
 #include "bezel/raster.hpp"
+#include "raster/fill_common.hpp"
 #include "raster/overlap.hpp"
 
 namespace bezel {
 
 namespace {
 
-constexpr int kFilterReach = 2;  // subpixels the 5-tap filter reads on each side
+constexpr int kFilterReach = raster_detail::kLcdFilterReach;
 
 void filter_row(const float* samples, int width, const LcdFilter& f, std::uint8_t* out) {
     for (int k = 0; k < width; ++k) {
@@ -49,17 +50,8 @@ void filter_row(const float* samples, int width, const LcdFilter& f, std::uint8_
 Status Rasterizer::fill_path_lcd(const Path& path, const Affine& transform,
                                  const MaskView& target, const FillOptions& options) {
     const int W = target.width, H = target.height;
+    if (Status st = raster_detail::check_lcd_target(target); !st) return st;
     const int samples_w = W + 2 * kFilterReach;
-    if (W < 0 || H < 0 || samples_w > kMaxBitmapDim || H > kMaxBitmapDim)
-        return Error{"LCD target " + std::to_string(W) + "x" + std::to_string(H) +
-                     " is outside 0.." + std::to_string(kMaxBitmapDim - 2 * kFilterReach) + "x" +
-                     std::to_string(kMaxBitmapDim) + " (the bitmap limit less the filter's reach)"};
-    if (W % 3 != 0)
-        return Error{"LCD target width " + std::to_string(W) +
-                     " is not a multiple of 3 (3 bytes per display pixel)"};
-    if (target.data == nullptr && W > 0 && H > 0)
-        return Error{"LCD target " + std::to_string(W) + "x" + std::to_string(H) +
-                     " has no pixel memory (null data)"};
     if (!transform.is_finite()) return Error{"fill_path (LCD): transform is not finite"};
     FeatureScratch& scratch = features();
     std::vector<float>& samples = scratch.lcd_samples;

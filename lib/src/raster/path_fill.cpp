@@ -9,6 +9,7 @@
 
 #include "bezel/raster.hpp"
 #include "raster/direct_fill.hpp"
+#include "raster/fill_common.hpp"
 #include "raster/overlap.hpp"
 #include "raster/render_flatten.hpp"
 
@@ -86,9 +87,8 @@ template <typename View>
 Status Rasterizer::fill_path_impl(const Path& path, const Affine& transform, FillRule rule,
                                   const View& target, const FlattenOptions& options) {
     if (!transform.is_finite()) return Error{"fill_path: transform is not finite"};
-    const double tol = std::max(options.tolerance_px, kMinFlattenTolerancePx);
-    const bool balanced = options.method == FlattenMethod::WangUniform &&
-                          options.tolerance_px > 0.0 && std::isfinite(options.tolerance_px);
+    const double tol = raster_detail::flatten_tolerance(options);
+    const bool balanced = raster_detail::balanced_flattening(options);
     // The direct route (direct_fill.hpp) for glyph-like fills; false means it left the target
     // alone and the general route below runs.
     if (balanced && raster_detail::fill_path_direct(path, transform, rule, target, tol,
@@ -100,9 +100,8 @@ Status Rasterizer::fill_path_impl(const Path& path, const Affine& transform, Fil
 template <typename View>
 Status Rasterizer::fill_path_general(const Path& path, const Affine& transform, FillRule rule,
                                      const View& target, const FlattenOptions& options) {
-    const double tol = std::max(options.tolerance_px, kMinFlattenTolerancePx);
-    const bool balanced = options.method == FlattenMethod::WangUniform &&
-                          options.tolerance_px > 0.0 && std::isfinite(options.tolerance_px);
+    const double tol = raster_detail::flatten_tolerance(options);
+    const bool balanced = raster_detail::balanced_flattening(options);
     const double estimate = estimate_segments(path, transform, tol);
     if (!(estimate <= static_cast<double>(kMaxEdges)))
         return Error{"fill_path: path would flatten to about " +
@@ -149,17 +148,6 @@ template Status Rasterizer::fill_path_gray<MaskView>(const Path&, const Affine&,
 
 namespace {
 
-// The origin folded into the transform's translation, so a path filled with an origin gives the
-// bits of the same path under the moved transform. A zero origin leaves the transform as it is.
-Affine moved_by(const Affine& transform, Vec2 origin) {
-    Affine m = transform;
-    if (origin.x != 0.0 || origin.y != 0.0) {
-        m.e += origin.x;
-        m.f += origin.y;
-    }
-    return m;
-}
-
 constexpr char kOriginNotFinite[] = "raster origin is not finite (NaN or infinity)";
 
 }  // namespace
@@ -167,7 +155,7 @@ constexpr char kOriginNotFinite[] = "raster origin is not finite (NaN or infinit
 Status Rasterizer::fill_path(const Path& path, const Affine& transform, const MaskView& target,
                              const FillOptions& options) {
     if (!options.origin.is_finite()) return Error{kOriginNotFinite};
-    const Affine m = moved_by(transform, options.origin);
+    const Affine m = raster_detail::moved_by(transform, options.origin);
     if (options.combine != CoverageCombine::Replace)
         return fill_path_combined(path, m, target, options);
     if (options.format == CoverageFormat::Lcd) return fill_path_lcd(path, m, target, options);
@@ -181,8 +169,8 @@ Status Rasterizer::fill_path(const Path& path, const Affine& transform,
                      "coverage is written as bytes into a MaskView)"};
     if (!options.origin.is_finite()) return Error{kOriginNotFinite};
     if (options.combine != CoverageCombine::Replace)
-        return fill_path_combined(path, moved_by(transform, options.origin), target, options);
-    return fill_path_gray(path, moved_by(transform, options.origin), target, options);
+        return fill_path_combined(path, raster_detail::moved_by(transform, options.origin), target, options);
+    return fill_path_gray(path, raster_detail::moved_by(transform, options.origin), target, options);
 }
 
 }  // namespace bezel
