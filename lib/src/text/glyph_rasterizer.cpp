@@ -17,6 +17,7 @@
 #include <string>
 
 #include "bezel/glyph.hpp"
+#include "text/glyph_draw.hpp"
 #include "text/synthetic_bold.hpp"
 
 namespace bezel {
@@ -197,23 +198,16 @@ Status GlyphRasterizer::draw_strike(const PreparedGlyph& glyph, const MaskView& 
 
 Status GlyphRasterizer::draw(const PreparedGlyph& glyph, const MaskView& target) {
     const GlyphBox& box = glyph.box;
-    const GlyphRenderOptions& o = glyph.options;
-    const int bytes_per_px = is_lcd(o) ? 3 : 1;
     if (box.width == 0 || box.height == 0) return ok_status();
-    if (target.width < box.width * bytes_per_px || target.height < box.height || !target.data)
-        return Error{glyph_label(glyph.gid) + ": target " + std::to_string(target.width) + "x" +
-                     std::to_string(target.height) + " is smaller than the glyph's " +
-                     std::to_string(box.width * bytes_per_px) + "x" + std::to_string(box.height) +
-                     " bytes"};
+    if (Status s = text_detail::check_glyph_target(glyph, target); !s)
+        return Error{glyph_label(glyph.gid) + ": " + s.error().message};
     if (box.color) return draw_color_alpha(glyph, target);
     if (glyph.strike) return draw_strike(glyph, target);
-    const Affine to_bitmap =
-        Affine::translate({o.offset_px.x - box.left, o.offset_px.y + box.top});
-    const MaskView corner = target.sub(0, 0, box.width * bytes_per_px, box.height);
-    FillOptions fill = o.fill;
-    fill.overlap = box.overlap;
-    // The one place glyphs meet the Rasterizer.
-    Status filled = raster_.fill_path(glyph.path, to_bitmap, corner, fill);
+    const FillJob job = text_detail::outline_job(glyph, target);
+    FillOptions fill = text_detail::outline_fill(glyph);
+    fill.origin = job.origin;
+    // The one place glyphs meet the Rasterizer (draw_set's fill_paths places them the same way).
+    Status filled = raster_.fill_path(*job.path, job.transform, job.target, fill);
     if (!filled) return Error{glyph_label(glyph.gid) + ": " + filled.error().message};
     return ok_status();
 }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "bezel/glyph.hpp"
+#include "text/glyph_draw.hpp"
 
 namespace bezel {
 
@@ -26,15 +27,6 @@ bool same_fill(const FillOptions& a, const FillOptions& b) {
            a.flatten.classic_flatness_epsilon == b.flatten.classic_flatness_epsilon &&
            a.format == b.format && a.lcd_order == b.lcd_order &&
            a.lcd_filter.taps == b.lcd_filter.taps && a.combine == b.combine;
-}
-
-// The fill options draw() uses for `glyph`.
-// The fill options draw() uses for `glyph`, less the origin, which goes into the glyph's job.
-FillOptions fill_of(const PreparedGlyph& glyph) {
-    FillOptions fill = glyph.options.fill;
-    fill.overlap = glyph.box.overlap;
-    fill.origin = Vec2{};
-    return fill;
 }
 
 bool drawn_by_fill(const PreparedGlyph& glyph) {
@@ -67,15 +59,9 @@ Status GlyphRasterizer::draw_set(const GlyphDrawJob* jobs, std::size_t count) {
         const PreparedGlyph* glyph = jobs[k].glyph;
         if (glyph == nullptr)
             return Error{"glyph set job " + std::to_string(k) + ": the glyph is null"};
-        const GlyphBox& box = glyph->box;
-        if (box.width == 0 || box.height == 0) continue;
-        const int bytes_per_px = glyph->options.fill.format == CoverageFormat::Lcd ? 3 : 1;
-        const MaskView& t = jobs[k].target;
-        if (t.width < box.width * bytes_per_px || t.height < box.height || t.data == nullptr)
-            return Error{set_label(k, glyph->gid) + "target " + std::to_string(t.width) + "x" +
-                         std::to_string(t.height) + " is smaller than the glyph's " +
-                         std::to_string(box.width * bytes_per_px) + "x" +
-                         std::to_string(box.height) + " bytes"};
+        if (glyph->box.width == 0 || glyph->box.height == 0) continue;
+        if (Status s = text_detail::check_glyph_target(*glyph, jobs[k].target); !s)
+            return Error{set_label(k, glyph->gid) + s.error().message};
     }
 
     // The run of outline glyphs gathered so far, all with the options `run_fill`.
@@ -107,20 +93,12 @@ Status GlyphRasterizer::draw_set(const GlyphDrawJob* jobs, std::size_t count) {
                 return Error{"glyph set job " + std::to_string(k) + ": " + s.error().message};
             continue;
         }
-        const FillOptions fill = fill_of(glyph);
+        const FillOptions fill = text_detail::outline_fill(glyph);
         if (!set_jobs_.empty() && !same_fill(fill, run_fill)) {
             if (Status s = flush(); !s) return s;
         }
         run_fill = fill;
-        // draw()'s placement: the pen offset and the box's corner, y down.
-        const GlyphBox& box = glyph.box;
-        const GlyphRenderOptions& o = glyph.options;
-        const int bytes_per_px = o.fill.format == CoverageFormat::Lcd ? 3 : 1;
-        FillJob job;
-        job.path = &glyph.path;
-        job.transform = Affine::translate({o.offset_px.x - box.left, o.offset_px.y + box.top});
-        job.target = jobs[k].target.sub(0, 0, box.width * bytes_per_px, box.height);
-        job.origin = o.fill.origin;
+        const FillJob job = text_detail::outline_job(glyph, jobs[k].target);
         set_jobs_.push_back(job);
         set_index_.push_back(k);
     }
