@@ -142,8 +142,8 @@ BEZEL_API void bezel_font_options_init(bezel_font_options* options);
 /* Opens a font file (TTF, OTF, TTC/OTC), read once (mapped read-only: the file must not be
  * truncated while the font or anything made from it exists). On success *out is a new font.
  * Errors: NULL path or out (INVALID_ARGUMENT); a missing or unreadable file (FILE_ERROR); bytes
- * that are not a font, an unknown variation axis or value (FONT_ERROR); a face index out of
- * range (OUT_OF_RANGE / FONT_ERROR). The message names the file. */
+ * that are not a font, a face index past the file's faces, an unknown variation axis or value
+ * (FONT_ERROR); a negative face index (OUT_OF_RANGE). The message names the file. */
 BEZEL_API bezel_status bezel_font_open_file(const char* path, const bezel_font_options* options,
                                             bezel_font** out);
 /* A font from `size` bytes at `data`. Borrowed (options->copy_data 0): the bytes must stay valid
