@@ -130,6 +130,21 @@ bezel_status to_variations(ErrorSlot* handle, const char* function, const bezel_
 
 using namespace bezel::capi_detail;
 
+// BEZEL_PROJECT_VERSION_* come from CMake's project() (CMakeLists.txt): the header's macros
+// cannot drift from the version the library is built as.
+static_assert(BEZEL_VERSION_MAJOR == BEZEL_PROJECT_VERSION_MAJOR &&
+                  BEZEL_VERSION_MINOR == BEZEL_PROJECT_VERSION_MINOR &&
+                  BEZEL_VERSION_PATCH == BEZEL_PROJECT_VERSION_PATCH,
+              "bezel.h's BEZEL_VERSION_* differ from CMakeLists.txt's project(VERSION)");
+
+namespace {
+constexpr bool same_text(const char* a, const char* b) {
+    return *a == *b && (*a == '\0' || same_text(a + 1, b + 1));
+}
+}  // namespace
+static_assert(same_text(BEZEL_VERSION_STRING, BEZEL_PROJECT_VERSION_STRING),
+              "bezel.h's BEZEL_VERSION_STRING differs from CMakeLists.txt's project(VERSION)");
+
 extern "C" {
 
 const char* bezel_status_name(bezel_status status) {
@@ -147,13 +162,6 @@ const char* bezel_status_name(bezel_status status) {
 }
 
 const char* bezel_last_error(void) { return thread_error().c_str(); }
-
-// BEZEL_PROJECT_VERSION_* come from CMake's project() (CMakeLists.txt): the header's macros
-// cannot drift from the version the library is built as.
-static_assert(BEZEL_VERSION_MAJOR == BEZEL_PROJECT_VERSION_MAJOR &&
-                  BEZEL_VERSION_MINOR == BEZEL_PROJECT_VERSION_MINOR &&
-                  BEZEL_VERSION_PATCH == BEZEL_PROJECT_VERSION_PATCH,
-              "bezel.h's BEZEL_VERSION_* differ from CMakeLists.txt's project(VERSION)");
 
 int bezel_version(void) {
     return BEZEL_VERSION_ENCODE(BEZEL_PROJECT_VERSION_MAJOR, BEZEL_PROJECT_VERSION_MINOR,
