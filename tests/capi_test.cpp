@@ -32,6 +32,16 @@ std::vector<std::uint8_t> read_bytes(const std::string& file) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// Stores the int `value` in an enum field as a C caller may (C allows any int there; in C++ an
+// enum object holding a value outside its enumerators' range must not be loaded, so the bytes
+// are written directly and the test never reads the field back). Enum ARGUMENTS out of range
+// are tested from C, by tests/consumer/capi.c.
+template <typename Enum>
+void set_raw(Enum& field, int value) {
+    static_assert(sizeof(Enum) == sizeof(int), "bezel.h's enums are int-sized");
+    std::memcpy(&field, &value, sizeof value);
+}
+
 // A failed call: not OK, and the thread's message mentions `needle`.
 void expect_failure(bezel_status status, const char* needle) {
     EXPECT_NE(status, BEZEL_STATUS_OK) << needle;
@@ -127,7 +137,6 @@ TEST(CApi, NullHandlesFailWithAMessageNamingTheCall) {
     bezel_glyph_options_init(nullptr);
     bezel_fill_options_init(nullptr);
     bezel_text_options_init(nullptr);
-    EXPECT_STREQ(bezel_status_name(static_cast<bezel_status>(99)), "unknown status");
 }
 
 TEST(CApi, MissingUnreadableAndTruncatedFontsAreNamedErrors) {
@@ -201,9 +210,9 @@ TEST(CApi, OptionsOutOfRangeAreRefusedByName) {
     refused("slant");
     o.bold = -0.1;
     refused("bold");
-    o.hinting = static_cast<bezel_hinting>(99);
+    set_raw(o.hinting, 99);
     refused("hinting 99");
-    o.coverage = static_cast<bezel_coverage>(-3);
+    set_raw(o.coverage, -3);
     refused("coverage -3");
 
     bezel_variation bad_tag{"wg", 1};
@@ -225,13 +234,10 @@ TEST(CApi, OptionsOutOfRangeAreRefusedByName) {
     EXPECT_NE(bezel_text_measure(t.r, "a", 1, &to, &extent), BEZEL_STATUS_OK);
     EXPECT_STRNE(bezel_text_renderer_last_error(t.r), "");
     bezel_text_options_init(&to);
-    to.align = static_cast<bezel_align>(7);
+    set_raw(to.align, 7);
     expect_failure(bezel_text_measure(t.r, "a", 1, &to, &extent), "align 7");
     bezel_text_options_init(&to);
     std::uint8_t px[16] = {};
-    expect_failure(bezel_text_render(t.r, "a", 1, &to, static_cast<bezel_pixel_format>(9), px,
-                                     sizeof px, 4, nullptr),
-                   "format 9");
     to.coverage = BEZEL_COVERAGE_LCD_RGB;
     expect_failure(bezel_text_render(t.r, "a", 1, &to, BEZEL_PIXEL_GRAY8, px, sizeof px, 4,
                                      nullptr),
@@ -331,7 +337,7 @@ TEST(CApi, BadBuffersAreRefusedAndLeftUntouched) {
                                          8),
                    "tolerance_px");
     bezel_fill_options_init(&bad_fill);
-    bad_fill.rule = static_cast<bezel_fill_rule>(5);
+    set_raw(bad_fill.rule, 5);
     expect_failure(bezel_rasterizer_fill(raster, path, nullptr, &bad_fill, mask.data(), 64, 8, 8,
                                          8),
                    "rule 5");

@@ -186,6 +186,12 @@ static void check_errors(bezel_font* font) {
     CHECK(bezel_text_measure(renderer, bad_utf8, 3, NULL, &extent) ==
           BEZEL_STATUS_INVALID_ARGUMENT);
     CHECK(strstr(bezel_text_renderer_last_error(renderer), "UTF-8") != NULL);
+    /* C lets any int into an enum argument: the library checks them as ints. */
+    CHECK(bezel_text_render(renderer, "a", 1, NULL, (bezel_pixel_format)9, NULL, 0, 0, NULL) ==
+          BEZEL_STATUS_INVALID_ARGUMENT);
+    CHECK(strstr(bezel_last_error(), "format 9") != NULL);
+    CHECK(strcmp(bezel_status_name((bezel_status)99), "unknown status") == 0);
+    CHECK(strcmp(bezel_status_name(BEZEL_STATUS_BUFFER_TOO_SMALL), "buffer too small") == 0);
     bezel_text_renderer_destroy(renderer);
     bezel_font_destroy(NULL);   /* a no-op */
 }

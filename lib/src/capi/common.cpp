@@ -76,7 +76,7 @@ bezel_status check_buffer(ErrorSlot* handle, const std::string& what, const void
     }
 }
 
-bezel_status to_hinting(ErrorSlot* handle, const char* function, bezel_hinting in, Hinting& out) {
+bezel_status to_hinting(ErrorSlot* handle, const char* function, int in, Hinting& out) {
     switch (in) {
     case BEZEL_HINTING_NONE: out = Hinting::None; return BEZEL_STATUS_OK;
     case BEZEL_HINTING_LIGHT: out = Hinting::Light; return BEZEL_STATUS_OK;
@@ -84,11 +84,11 @@ bezel_status to_hinting(ErrorSlot* handle, const char* function, bezel_hinting i
     case BEZEL_HINTING_AUTO: out = Hinting::Auto; return BEZEL_STATUS_OK;
     }
     return fail(handle, BEZEL_STATUS_INVALID_ARGUMENT,
-                std::string(function) + ": hinting " + std::to_string(static_cast<int>(in)) +
+                std::string(function) + ": hinting " + std::to_string(in) +
                     " is not a bezel_hinting (0..3)");
 }
 
-bezel_status to_coverage(ErrorSlot* handle, const char* function, bezel_coverage in,
+bezel_status to_coverage(ErrorSlot* handle, const char* function, int in,
                          CoverageFormat& format, LcdOrder& order) {
     switch (in) {
     case BEZEL_COVERAGE_GRAY: format = CoverageFormat::Gray; return BEZEL_STATUS_OK;
@@ -102,7 +102,7 @@ bezel_status to_coverage(ErrorSlot* handle, const char* function, bezel_coverage
         return BEZEL_STATUS_OK;
     }
     return fail(handle, BEZEL_STATUS_INVALID_ARGUMENT,
-                std::string(function) + ": coverage " + std::to_string(static_cast<int>(in)) +
+                std::string(function) + ": coverage " + std::to_string(in) +
                     " is not a bezel_coverage (0..2)");
 }
 
@@ -148,7 +148,7 @@ static_assert(same_text(BEZEL_VERSION_STRING, BEZEL_PROJECT_VERSION_STRING),
 extern "C" {
 
 const char* bezel_status_name(bezel_status status) {
-    switch (status) {
+    switch (raw_enum(status)) {
     case BEZEL_STATUS_OK: return "ok";
     case BEZEL_STATUS_INVALID_ARGUMENT: return "invalid argument";
     case BEZEL_STATUS_OUT_OF_RANGE: return "out of range";

@@ -35,8 +35,8 @@ bezel_status to_render_options(const char* fn, const bezel_glyph_options& in,
                         " is outside [0, 0.25] (kMaxSyntheticBold)");
     GlyphRenderOptions o;
     o.size_px = in.size_px;
-    if (bezel_status s = to_hinting(nullptr, fn, in.hinting, o.hinting)) return s;
-    if (bezel_status s = to_coverage(nullptr, fn, in.coverage, o.fill.format, o.fill.lcd_order))
+    if (bezel_status s = to_hinting(nullptr, fn, raw_enum(in.hinting), o.hinting)) return s;
+    if (bezel_status s = to_coverage(nullptr, fn, raw_enum(in.coverage), o.fill.format, o.fill.lcd_order))
         return s;
     o.offset_px = {in.offset_x_px, in.offset_y_px};
     o.embedded_bitmaps = in.embedded_bitmaps != 0;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstring>
 #include <new>
 #include <string>
 #include <string_view>
@@ -69,9 +70,20 @@ bezel_status check_buffer(ErrorSlot* handle, const std::string& what, const void
                           std::size_t buffer_size, std::ptrdiff_t stride, std::size_t row_bytes,
                           std::size_t rows) noexcept;
 
+// The integer a C caller stored in an enum field or passed as an enum argument. C lets any int
+// through; in C++ loading an enum object whose value lies outside the enumerators' range is
+// undefined, so enum inputs are read as their bytes and checked as ints.
+template <typename Enum>
+int raw_enum(const Enum& value) noexcept {
+    static_assert(sizeof(Enum) == sizeof(int), "bezel.h's enums are int-sized in C and C++");
+    int raw;
+    std::memcpy(&raw, &value, sizeof raw);
+    return raw;
+}
+
 // Options checked and converted; a failure is reported through `handle` (a non-OK status).
-bezel_status to_hinting(ErrorSlot* handle, const char* function, bezel_hinting in, Hinting& out);
-bezel_status to_coverage(ErrorSlot* handle, const char* function, bezel_coverage in,
+bezel_status to_hinting(ErrorSlot* handle, const char* function, int in, Hinting& out);
+bezel_status to_coverage(ErrorSlot* handle, const char* function, int in,
                          CoverageFormat& format, LcdOrder& order);
 bezel_status to_variations(ErrorSlot* handle, const char* function, const bezel_variation* in,
                            std::size_t count, std::vector<VariationSetting>& out);

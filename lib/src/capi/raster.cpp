@@ -46,18 +46,19 @@ bezel_status bezel_rasterizer_fill(bezel_rasterizer* rasterizer, const bezel_pat
         bezel_fill_options_init(&o);
         if (options) o = *options;
         FillOptions fill;
-        if (o.rule != BEZEL_FILL_NONZERO && o.rule != BEZEL_FILL_EVENODD)
+        const int rule = raw_enum(o.rule);
+        if (rule != BEZEL_FILL_NONZERO && rule != BEZEL_FILL_EVENODD)
             return fail(err, BEZEL_STATUS_INVALID_ARGUMENT,
-                        std::string(fn) + ": rule " + std::to_string(static_cast<int>(o.rule)) +
+                        std::string(fn) + ": rule " + std::to_string(rule) +
                             " is not a bezel_fill_rule (0..1)");
-        fill.rule = o.rule == BEZEL_FILL_EVENODD ? FillRule::EvenOdd : FillRule::NonZero;
+        fill.rule = rule == BEZEL_FILL_EVENODD ? FillRule::EvenOdd : FillRule::NonZero;
         fill.overlap = o.accurate_overlap ? OverlapMode::Accurate : OverlapMode::Accumulate;
         if (!(o.tolerance_px > 0 && std::isfinite(o.tolerance_px)))
             return fail(err, BEZEL_STATUS_INVALID_ARGUMENT,
                         std::string(fn) + ": tolerance_px " + std::to_string(o.tolerance_px) +
                             " is not finite and > 0");
         fill.flatten.tolerance_px = o.tolerance_px;
-        if (bezel_status s = to_coverage(err, fn, o.coverage, fill.format, fill.lcd_order))
+        if (bezel_status s = to_coverage(err, fn, raw_enum(o.coverage), fill.format, fill.lcd_order))
             return s;
         if (width < 0 || height < 0 || width > kMaxBitmapDim || height > kMaxBitmapDim)
             return fail(err, BEZEL_STATUS_OUT_OF_RANGE,

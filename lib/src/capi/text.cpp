@@ -22,9 +22,10 @@ bezel_status to_text_options(ErrorSlot* err, const char* fn, const bezel_text_op
                     std::string(fn) + ": size_px " + std::to_string(o.size_px) +
                         " is outside (0, " + std::to_string(static_cast<int>(kMaxFontSizePx)) +
                         "]");
-    if (o.align != BEZEL_ALIGN_START && o.align != BEZEL_ALIGN_CENTER && o.align != BEZEL_ALIGN_END)
+    const int align = raw_enum(o.align);
+    if (align != BEZEL_ALIGN_START && align != BEZEL_ALIGN_CENTER && align != BEZEL_ALIGN_END)
         return fail(err, BEZEL_STATUS_INVALID_ARGUMENT,
-                    std::string(fn) + ": align " + std::to_string(static_cast<int>(o.align)) +
+                    std::string(fn) + ": align " + std::to_string(align) +
                         " is not a bezel_align (0..2)");
     TextRenderOptions t;
     t.shape.size_px = o.size_px;
@@ -34,18 +35,18 @@ bezel_status to_text_options(ErrorSlot* err, const char* fn, const bezel_text_op
     t.layout.width_px = o.width_px;
     t.layout.line_height = o.line_height;
     t.layout.margin_px = o.margin_px;
-    t.layout.align = o.align == BEZEL_ALIGN_CENTER ? Align::Center
-                     : o.align == BEZEL_ALIGN_END  ? Align::End
+    t.layout.align = align == BEZEL_ALIGN_CENTER ? Align::Center
+                     : align == BEZEL_ALIGN_END  ? Align::End
                                                    : Align::Start;
-    if (bezel_status s = to_hinting(err, fn, o.hinting, t.hinting)) return s;
-    if (bezel_status s = to_coverage(err, fn, o.coverage, t.format, t.lcd_order)) return s;
+    if (bezel_status s = to_hinting(err, fn, raw_enum(o.hinting), t.hinting)) return s;
+    if (bezel_status s = to_coverage(err, fn, raw_enum(o.coverage), t.format, t.lcd_order)) return s;
     t.foreground = {o.foreground.r, o.foreground.g, o.foreground.b, o.foreground.a};
     t.background = {o.background.r, o.background.g, o.background.b, o.background.a};
     out = std::move(t);
     return BEZEL_STATUS_OK;
 }
 
-bezel_status to_format(ErrorSlot* err, const char* fn, bezel_pixel_format in, PixelFormat& out) {
+bezel_status to_format(ErrorSlot* err, const char* fn, int in, PixelFormat& out) {
     switch (in) {
     case BEZEL_PIXEL_GRAY8: out = PixelFormat::Gray8; return BEZEL_STATUS_OK;
     case BEZEL_PIXEL_RGBA8: out = PixelFormat::Rgba8; return BEZEL_STATUS_OK;
@@ -54,7 +55,7 @@ bezel_status to_format(ErrorSlot* err, const char* fn, bezel_pixel_format in, Pi
     case BEZEL_PIXEL_BGRA8_PREMULTIPLIED: out = PixelFormat::Bgra8Premultiplied; return BEZEL_STATUS_OK;
     }
     return fail(err, BEZEL_STATUS_INVALID_ARGUMENT,
-                std::string(fn) + ": format " + std::to_string(static_cast<int>(in)) +
+                std::string(fn) + ": format " + std::to_string(in) +
                     " is not a bezel_pixel_format (0..4)");
 }
 
@@ -181,7 +182,7 @@ bezel_status bezel_text_render(bezel_text_renderer* renderer, const char* utf8, 
         TextRenderOptions t;
         if (bezel_status s = to_text_options(err, fn, options, t)) return s;
         PixelFormat pixel_format{};
-        if (bezel_status s = to_format(err, fn, format, pixel_format)) return s;
+        if (bezel_status s = to_format(err, fn, raw_enum(format), pixel_format)) return s;
         if (bezel_status s = check_lcd(err, fn, t, pixel_format)) return s;
         Expected<TextLayout> layout = renderer->renderer.layout(text, t);
         if (!layout) return fail(err, BEZEL_STATUS_INVALID_ARGUMENT, layout.error().message);
@@ -223,7 +224,7 @@ bezel_status bezel_text_draw(bezel_text_renderer* renderer, const char* utf8, st
         TextRenderOptions t;
         if (bezel_status s = to_text_options(err, fn, options, t)) return s;
         PixelFormat pixel_format{};
-        if (bezel_status s = to_format(err, fn, format, pixel_format)) return s;
+        if (bezel_status s = to_format(err, fn, raw_enum(format), pixel_format)) return s;
         if (bezel_status s = check_lcd(err, fn, t, pixel_format)) return s;
         if (width < 0 || height < 0 || width > kMaxImageDim || height > kMaxImageDim)
             return fail(err, BEZEL_STATUS_OUT_OF_RANGE,
