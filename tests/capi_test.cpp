@@ -74,7 +74,7 @@ struct Glyphs {
 
 struct Text {
     bezel_text_renderer* r = nullptr;
-    explicit Text(const bezel_font* font) {
+    explicit Text(bezel_font* font) {
         EXPECT_EQ(bezel_text_renderer_create(&font, 1, &r), BEZEL_STATUS_OK) << bezel_last_error();
     }
     ~Text() { bezel_text_renderer_destroy(r); }
@@ -246,7 +246,7 @@ TEST(CApi, OptionsOutOfRangeAreRefusedByName) {
     expect_failure(bezel_text_render(t.r, "a", 1, &to, BEZEL_PIXEL_RGBA8, px, sizeof px, 16,
                                      nullptr),
                    "opaque");
-    const bezel_font* fonts[2] = {f.font, nullptr};
+    bezel_font* fonts[2] = {f.font, nullptr};
     bezel_text_renderer* tr = nullptr;
     expect_failure(bezel_text_renderer_create(fonts, 0, &tr), "font_count 0");
     expect_failure(bezel_text_renderer_create(fonts, 1000, &tr), "font_count 1000");

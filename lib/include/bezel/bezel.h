@@ -361,9 +361,10 @@ BEZEL_API void bezel_text_options_init(bezel_text_options* options);
 /* A renderer over `font_count` fonts: text is drawn with fallback (each cluster from the first
  * font that has it; characters none has are the first font's .notdef). Each font is used at the
  * variation coordinates it had here; the fonts may be destroyed afterwards (borrowed memory
- * must outlive the renderer). Errors: NULL fonts or out, font_count 0 or above 64
+ * must outlive the renderer). The fonts are only read (the array's type lets C pass `&font` or a
+ * `bezel_font* fonts[]` without a cast). Errors: NULL fonts or out, font_count 0 or above 64
  * (OUT_OF_RANGE), a font the list cannot take. */
-BEZEL_API bezel_status bezel_text_renderer_create(const bezel_font* const* fonts,
+BEZEL_API bezel_status bezel_text_renderer_create(bezel_font* const* fonts,
                                                   size_t font_count,
                                                   bezel_text_renderer** out);
 BEZEL_API void bezel_text_renderer_destroy(bezel_text_renderer* renderer);

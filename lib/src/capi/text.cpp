@@ -119,7 +119,7 @@ void bezel_text_options_init(bezel_text_options* options) {
     options->background = bezel_rgba{255, 255, 255, 255};
 }
 
-bezel_status bezel_text_renderer_create(const bezel_font* const* fonts, std::size_t font_count,
+bezel_status bezel_text_renderer_create(bezel_font* const* fonts, std::size_t font_count,
                                         bezel_text_renderer** out) {
     static const char* const fn = "bezel_text_renderer_create";
     return guarded(nullptr, fn, [&]() -> bezel_status {
