@@ -56,7 +56,7 @@
 extern "C" {
 #endif
 
-/* ---- Status, errors, version ---------------------------------------------------------------- */
+/* ---- Status, errors, version ----------------------------------------------------------------- */
 
 typedef enum bezel_status {
     BEZEL_STATUS_OK = 0,
@@ -116,7 +116,7 @@ typedef struct bezel_rgba {
     uint8_t r, g, b, a;   /* sRGB-encoded, straight alpha */
 } bezel_rgba;
 
-/* ---- Fonts ------------------------------------------------------------------------------------ */
+/* ---- Fonts ----------------------------------------------------------------------------------- */
 
 typedef struct bezel_font bezel_font;
 
@@ -176,10 +176,10 @@ BEZEL_API bezel_status bezel_font_glyph_index(bezel_font* font, uint32_t code_po
 /* Sets design coordinates (unnamed axes return to their defaults). Rasterizers and renderers
  * made before keep the coordinates they were made with. Errors (FONT_ERROR) name an unknown
  * tag or an out-of-range value; the font keeps its previous coordinates. */
-BEZEL_API bezel_status bezel_font_set_variations(bezel_font* font, const bezel_variation* variations,
-                                                 size_t count);
+BEZEL_API bezel_status bezel_font_set_variations(bezel_font* font,
+                                                 const bezel_variation* variations, size_t count);
 
-/* ---- Glyph rasterizer: single glyphs into caller masks ------------------------------------------ */
+/* ---- Glyph rasterizer: single glyphs into caller masks --------------------------------------- */
 
 typedef struct bezel_glyph_rasterizer bezel_glyph_rasterizer;
 
@@ -257,7 +257,7 @@ BEZEL_API bezel_status bezel_glyph_render_set(bezel_glyph_rasterizer* rasterizer
                                               const bezel_glyph_target* targets,
                                               bezel_glyph_box* boxes);
 
-/* ---- Paths ------------------------------------------------------------------------------------ */
+/* ---- Paths ----------------------------------------------------------------------------------- */
 
 typedef struct bezel_path bezel_path;
 
@@ -297,7 +297,7 @@ typedef struct bezel_int_rect {
 BEZEL_API bezel_status bezel_path_pixel_bounds(bezel_path* path, const bezel_transform* transform,
                                                bezel_int_rect* out);
 
-/* ---- Rasterizer: paths into caller masks ---------------------------------------------------------- */
+/* ---- Rasterizer: paths into caller masks ----------------------------------------------------- */
 
 typedef struct bezel_rasterizer bezel_rasterizer;
 
@@ -332,7 +332,7 @@ BEZEL_API bezel_status bezel_rasterizer_fill(bezel_rasterizer* rasterizer, const
                                              size_t buffer_size, int width, int height,
                                              ptrdiff_t stride);
 
-/* ---- Text renderer: lines and paragraphs into caller pixels ------------------------------------- */
+/* ---- Text renderer: lines and paragraphs into caller pixels ---------------------------------- */
 
 typedef struct bezel_text_renderer bezel_text_renderer;
 

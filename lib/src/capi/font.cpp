@@ -69,7 +69,8 @@ bezel_status bezel_font_open_file(const char* path, const bezel_font_options* op
         if (options) o = *options;
         if (bezel_status s = check_face_index(fn, o.face_index)) return s;
         std::vector<VariationSetting> variations;
-        if (bezel_status s = to_variations(nullptr, fn, o.variations, o.variation_count, variations))
+        if (bezel_status s =
+                to_variations(nullptr, fn, o.variations, o.variation_count, variations))
             return s;
         Expected<FontFace> face = FontFace::open(path, o.face_index);
         if (!face) return fail(nullptr, open_failure_status(path), face.error().message);
@@ -97,7 +98,8 @@ bezel_status bezel_font_open_memory(const void* data, std::size_t size,
                             std::to_string(kMaxFontBytes) + ")");
         if (bezel_status s = check_face_index(fn, o.face_index)) return s;
         std::vector<VariationSetting> variations;
-        if (bezel_status s = to_variations(nullptr, fn, o.variations, o.variation_count, variations))
+        if (bezel_status s =
+                to_variations(nullptr, fn, o.variations, o.variation_count, variations))
             return s;
         std::optional<Expected<FontFace>> face;
         if (o.copy_data) {

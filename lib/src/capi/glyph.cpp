@@ -36,7 +36,8 @@ bezel_status to_render_options(const char* fn, const bezel_glyph_options& in,
     GlyphRenderOptions o;
     o.size_px = in.size_px;
     if (bezel_status s = to_hinting(nullptr, fn, raw_enum(in.hinting), o.hinting)) return s;
-    if (bezel_status s = to_coverage(nullptr, fn, raw_enum(in.coverage), o.fill.format, o.fill.lcd_order))
+    if (bezel_status s =
+            to_coverage(nullptr, fn, raw_enum(in.coverage), o.fill.format, o.fill.lcd_order))
         return s;
     o.offset_px = {in.offset_x_px, in.offset_y_px};
     o.embedded_bitmaps = in.embedded_bitmaps != 0;
@@ -53,7 +54,8 @@ bezel_glyph_box to_box(const PreparedGlyph& g) {
     box.width = g.box.width;
     box.height = g.box.height;
     box.row_bytes = g.box.width * (g.options.fill.format == CoverageFormat::Lcd ? 3 : 1);
-    box.buffer_size = static_cast<std::size_t>(box.row_bytes) * static_cast<std::size_t>(box.height);
+    box.buffer_size =
+        static_cast<std::size_t>(box.row_bytes) * static_cast<std::size_t>(box.height);
     box.advance_px = g.box.advance_px;
     box.color = g.box.color ? 1 : 0;
     return box;

@@ -58,7 +58,8 @@ bezel_status bezel_rasterizer_fill(bezel_rasterizer* rasterizer, const bezel_pat
                         std::string(fn) + ": tolerance_px " + std::to_string(o.tolerance_px) +
                             " is not finite and > 0");
         fill.flatten.tolerance_px = o.tolerance_px;
-        if (bezel_status s = to_coverage(err, fn, raw_enum(o.coverage), fill.format, fill.lcd_order))
+        if (bezel_status s =
+                to_coverage(err, fn, raw_enum(o.coverage), fill.format, fill.lcd_order))
             return s;
         if (width < 0 || height < 0 || width > kMaxBitmapDim || height > kMaxBitmapDim)
             return fail(err, BEZEL_STATUS_OUT_OF_RANGE,

@@ -39,7 +39,8 @@ bezel_status to_text_options(ErrorSlot* err, const char* fn, const bezel_text_op
                      : align == BEZEL_ALIGN_END  ? Align::End
                                                    : Align::Start;
     if (bezel_status s = to_hinting(err, fn, raw_enum(o.hinting), t.hinting)) return s;
-    if (bezel_status s = to_coverage(err, fn, raw_enum(o.coverage), t.format, t.lcd_order)) return s;
+    if (bezel_status s = to_coverage(err, fn, raw_enum(o.coverage), t.format, t.lcd_order))
+        return s;
     t.foreground = {o.foreground.r, o.foreground.g, o.foreground.b, o.foreground.a};
     t.background = {o.background.r, o.background.g, o.background.b, o.background.a};
     out = std::move(t);
@@ -51,8 +52,12 @@ bezel_status to_format(ErrorSlot* err, const char* fn, int in, PixelFormat& out)
     case BEZEL_PIXEL_GRAY8: out = PixelFormat::Gray8; return BEZEL_STATUS_OK;
     case BEZEL_PIXEL_RGBA8: out = PixelFormat::Rgba8; return BEZEL_STATUS_OK;
     case BEZEL_PIXEL_BGRA8: out = PixelFormat::Bgra8; return BEZEL_STATUS_OK;
-    case BEZEL_PIXEL_RGBA8_PREMULTIPLIED: out = PixelFormat::Rgba8Premultiplied; return BEZEL_STATUS_OK;
-    case BEZEL_PIXEL_BGRA8_PREMULTIPLIED: out = PixelFormat::Bgra8Premultiplied; return BEZEL_STATUS_OK;
+    case BEZEL_PIXEL_RGBA8_PREMULTIPLIED:
+        out = PixelFormat::Rgba8Premultiplied;
+        return BEZEL_STATUS_OK;
+    case BEZEL_PIXEL_BGRA8_PREMULTIPLIED:
+        out = PixelFormat::Bgra8Premultiplied;
+        return BEZEL_STATUS_OK;
     }
     return fail(err, BEZEL_STATUS_INVALID_ARGUMENT,
                 std::string(fn) + ": format " + std::to_string(in) +
@@ -133,7 +138,8 @@ bezel_status bezel_text_renderer_create(bezel_font* const* fonts, std::size_t fo
         for (std::size_t i = 0; i < font_count; ++i)
             if (!fonts[i])
                 return null_argument(nullptr, fn, ("fonts[" + std::to_string(i) + "]").c_str());
-        Expected<FontCollection> list = FontCollection::from_face(fonts[0]->face, fonts[0]->variations);
+        Expected<FontCollection> list =
+            FontCollection::from_face(fonts[0]->face, fonts[0]->variations);
         if (!list) return fail(nullptr, BEZEL_STATUS_FONT_ERROR, list.error().message);
         for (std::size_t i = 1; i < font_count; ++i) {
             Expected<std::size_t> added = list->add(fonts[i]->face, fonts[i]->variations);
