@@ -2,7 +2,9 @@
 # then configure, build and run the README's library example (its first ```cpp block, taken from
 # README.md itself, so the example a newcomer copies is the one tested) with tests/consumer's
 # CMakeLists.txt against it through find_package(bezel CONFIG).
-# Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR, FONT, EXTRA_FLAGS (sanitizer flags of the build, if any),
+# Then the C API (docs/capi.md): tests/consumer/capi.c built as C11 through pkg-config and through
+# bezel::bezel_c, run, and libbezel_c.so's exports and the consumer's NEEDED checked.
+# Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR, FONT, C_COMPILER, EXTRA_FLAGS (sanitizer flags of the build, if any),
 # TOOLCHAIN (a cross build's toolchain file, if any: the consumer is built with it too and run
 # through the CMAKE_CROSSCOMPILING_EMULATOR it sets).
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -34,11 +36,22 @@ string(FIND "${example}" "\n```" end)
 string(SUBSTRING "${example}" 0 ${end} example)
 file(WRITE "${WORK_DIR}/src/main.cpp" "${example}\n")
 configure_file("${SOURCE_DIR}/tests/consumer/CMakeLists.txt" "${WORK_DIR}/src/CMakeLists.txt" COPYONLY)
+configure_file("${SOURCE_DIR}/tests/consumer/capi.c" "${WORK_DIR}/src/capi.c" COPYONLY)
 run(${CMAKE_COMMAND} -S "${WORK_DIR}/src" -B "${WORK_DIR}/build"
     "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" "-DCMAKE_CXX_FLAGS=${EXTRA_FLAGS}"
+    "-DCMAKE_C_COMPILER=${C_COMPILER}" "-DCMAKE_C_FLAGS=${EXTRA_FLAGS}"
     "-DCMAKE_EXE_LINKER_FLAGS=${EXTRA_FLAGS}" ${cross})
 run(${CMAKE_COMMAND} --build "${WORK_DIR}/build")
 run(${emulator} "${WORK_DIR}/build/consumer" "${FONT}")
+run(${emulator} "${WORK_DIR}/build/capi_consumer" "${FONT}")
+function(capture out_var)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${err}")
+  endif()
+  set(${out_var} "${out}" PARENT_SCOPE)
+endfunction()
+include("${SOURCE_DIR}/tests/consumer/capi.cmake")
 
 # A shared package (BUILD_SHARED_LIBS=ON) is held to its ABI contract (CMakeLists.txt's
 # libbezel.so): a SONAME the install provides, a consumer that needs libbezel and none of bezel's
@@ -49,13 +62,6 @@ if(NOT shared_libs)
 endif()
 list(GET shared_libs 0 shared_lib)
 get_filename_component(lib_dir "${shared_lib}" DIRECTORY)
-function(capture out_var)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${err}")
-  endif()
-  set(${out_var} "${out}" PARENT_SCOPE)
-endfunction()
 capture(dynamic readelf -d "${shared_lib}")
 if(NOT dynamic MATCHES "Library soname: \\[(libbezel\\.so\\.[0-9]+(\\.[0-9]+)?)\\]")
   message(FATAL_ERROR "${shared_lib} has no libbezel.so.N[.M] SONAME:\n${dynamic}")
