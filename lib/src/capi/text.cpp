@@ -110,13 +110,13 @@ bezel_status check_lcd(ErrorSlot* err, const char* fn, const TextRenderOptions& 
 }
 
 // The arguments bezel_text_render and bezel_text_draw share, checked and converted: the text,
-// its options and the pixel format, which must agree about LCD coverage.
+// its options and the pixel format (its raw int: raw_enum), which must agree about LCD coverage.
 bezel_status to_text_call(ErrorSlot* err, const char* fn, const char* utf8, std::size_t length,
-                          const bezel_text_options* options, bezel_pixel_format format,
+                          const bezel_text_options* options, int format,
                           std::string_view& text, TextRenderOptions& t, PixelFormat& pixel_format) {
     if (bezel_status s = to_text(err, fn, utf8, length, text)) return s;
     if (bezel_status s = to_text_options(err, fn, options, t)) return s;
-    if (bezel_status s = to_format(err, fn, raw_enum(format), pixel_format)) return s;
+    if (bezel_status s = to_format(err, fn, format, pixel_format)) return s;
     return check_lcd(err, fn, t, pixel_format);
 }
 
@@ -198,7 +198,8 @@ bezel_status bezel_text_render(bezel_text_renderer* renderer, const char* utf8, 
         TextRenderOptions t;
         PixelFormat pixel_format{};
         if (bezel_status s =
-                to_text_call(err, fn, utf8, length, options, format, text, t, pixel_format))
+                to_text_call(err, fn, utf8, length, options, raw_enum(format), text, t,
+                             pixel_format))
             return s;
         Expected<TextLayout> layout = renderer->renderer.layout(text, t);
         if (!layout) return fail(err, BEZEL_STATUS_INVALID_ARGUMENT, layout.error().message);
@@ -239,7 +240,8 @@ bezel_status bezel_text_draw(bezel_text_renderer* renderer, const char* utf8, st
         TextRenderOptions t;
         PixelFormat pixel_format{};
         if (bezel_status s =
-                to_text_call(err, fn, utf8, length, options, format, text, t, pixel_format))
+                to_text_call(err, fn, utf8, length, options, raw_enum(format), text, t,
+                             pixel_format))
             return s;
         if (width < 0 || height < 0 || width > kMaxImageDim || height > kMaxImageDim)
             return fail(err, BEZEL_STATUS_OUT_OF_RANGE,
