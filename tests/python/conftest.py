@@ -4,8 +4,8 @@ Python.pytest (tests/CMakeLists.txt) with the build tree's package on PYTHONPATH
 Environment (set by ctest): BEZEL_FONTS_DIR (fonts-test/), BEZEL_CLI (the bezel binary of the
 same build), BEZEL_C_LIBRARY (libbezel_c.so of the same build). Run by hand:
     PYTHONPATH=build/test/python /usr/bin/python3 -m pytest tests/python
-(a sanitized build also needs LD_PRELOAD=$(c++ -print-file-name=libasan.so)
-ASAN_OPTIONS=detect_leaks=0)."""
+(a sanitized build also needs ASAN_OPTIONS=detect_leaks=0 and LD_PRELOAD="$(c++
+-print-file-name=libasan.so) $(c++ -print-file-name=libstdc++.so)": docs/python.md)."""
 
 import os
 import pathlib
