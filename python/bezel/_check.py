@@ -4,6 +4,7 @@ ValueError, each naming the argument. Ranges come from the library's limits
 
 from __future__ import annotations
 
+import functools
 import math
 import numbers
 from typing import Any, Iterable, Optional, Sequence, Tuple, Union
@@ -63,12 +64,18 @@ def optional_str(name: str, value: Any) -> Optional[str]:
     return value
 
 
+# Pages are rendered in a few colours, each named on every call: parse each string once.
+@functools.lru_cache(maxsize=256)
+def _parsed_colour(text: str) -> Tuple[int, int, int, int]:
+    return _bezel.parse_color(text)
+
+
 def colour(name: str, value: Any) -> Tuple[int, int, int, int]:
     """A colour as bezel's CLI takes it ("#rrggbb", "#rrggbbaa", "#rgb", a CSS name,
     "transparent"; the library's parser) or an (r, g, b) / (r, g, b, a) tuple of ints 0..255."""
     if isinstance(value, str):
         try:
-            return _bezel.parse_color(value)
+            return _parsed_colour(value)
         except ValueError as e:
             raise ValueError(f"{name}: {e}") from None
     if isinstance(value, (tuple, list)) and len(value) in (3, 4):

@@ -181,3 +181,25 @@ def test_collection_faces():
     assert second.family == "Bezel Variable" and second.face_count == 2
     with pytest.raises(bezel.Error, match="face"):
         bezel.Font(ttc, face_index=2)
+
+
+def test_lcd_text_equals_the_cli(dejavu, cli):
+    from PIL import Image
+    page = dejavu.render("LCD text", size=16, margin=2, lcd="bgr")
+    assert page.ndim == 3
+    png = cli("render", DEJAVU, "LCD text", "--font-size", "16", "--margin", "2",
+              "--no-system-fonts", "--lcd", "bgr", "-O", "png")
+    assert np.array_equal(page, np.array(Image.open(io.BytesIO(png)).convert("RGBA")))
+    # Subpixel text has colour fringes: the channels differ somewhere.
+    assert (page[:, :, 0] != page[:, :, 2]).any()
+
+
+def test_custom_palette_equals_the_cli(cli):
+    from PIL import Image
+    font = bezel.Font(COLR, size=48)
+    plain = font.render("\U0001F601")
+    recoloured = font.render("\U0001F601", custom_palette={4: "blue", 10: (0, 128, 0)})
+    assert not np.array_equal(plain, recoloured)
+    png = cli("render", COLR, "\U0001F601", "--font-size", "48", "--margin", "0",
+              "--no-system-fonts", "--custom-palette", "4=blue,10=#008000", "-O", "png")
+    assert np.array_equal(recoloured, np.array(Image.open(io.BytesIO(png)).convert("RGBA")))
