@@ -203,3 +203,16 @@ def test_custom_palette_equals_the_cli(cli):
     png = cli("render", COLR, "\U0001F601", "--font-size", "48", "--margin", "0",
               "--no-system-fonts", "--custom-palette", "4=blue,10=#008000", "-O", "png")
     assert np.array_equal(recoloured, np.array(Image.open(io.BytesIO(png)).convert("RGBA")))
+
+
+def test_fonts_and_paths_pickle():
+    import pickle
+    font = bezel.Font(DEJAVU, size=21, hinting="light", fallback=[bezel.Font(CJK)])
+    again = pickle.loads(pickle.dumps(font))
+    assert again.size == 21 and again.hinting == "light" and again.fonts == font.fonts
+    assert np.array_equal(again.render("aあ"), font.render("aあ"))
+    with open(DEJAVU, "rb") as f:
+        from_bytes = bezel.Font(f.read(), size=12)
+    assert np.array_equal(pickle.loads(pickle.dumps(from_bytes)).render("b"), from_bytes.render("b"))
+    path = font.outline("S").path
+    assert pickle.loads(pickle.dumps(path)) == path
