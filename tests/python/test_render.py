@@ -216,3 +216,31 @@ def test_fonts_and_paths_pickle():
     assert np.array_equal(pickle.loads(pickle.dumps(from_bytes)).render("b"), from_bytes.render("b"))
     path = font.outline("S").path
     assert pickle.loads(pickle.dumps(path)) == path
+
+
+def test_missing_glyph_warnings_follow_the_warnings_filters(dejavu):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", bezel.MissingGlyphWarning)
+        with pytest.raises(bezel.MissingGlyphWarning):
+            dejavu.render("あ")
+        with pytest.raises(bezel.MissingGlyphWarning):
+            dejavu.glyph("あ")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bezel.MissingGlyphWarning)
+        assert dejavu.glyph("あ").gid == 0   # the .notdef box
+
+
+def test_system_fonts_are_asked_only_when_enabled():
+    # Off (the default), a character no listed font has is always the .notdef box, whatever the
+    # machine's fonts. On, fontconfig is asked: a system font draws it (appended to the list),
+    # or, where none has it (ctest runs with a configuration without fonts), it stays missing.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bezel.MissingGlyphWarning)
+        alone = bezel.Font(DEJAVU, size=16).glyph("あ")
+    assert (alone.font, alone.gid) == (0, 0)
+    font = bezel.Font(DEJAVU, size=16, system_fonts=True)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        glyph = font.glyph("あ")
+    missing = [w for w in caught if issubclass(w.category, bezel.MissingGlyphWarning)]
+    assert (glyph.font >= 1 and glyph.gid > 0 and not missing) or (glyph.gid == 0 and missing)
