@@ -241,3 +241,20 @@ def test_second_run_on_the_same_folder_is_locked_out(tmp_path):
         with pytest.raises(manifest.ManifestError, match="another run"):
             with manifest.RunLock(str(tmp_path)):
                 pass
+
+
+# --- progress -------------------------------------------------------------------------------------
+
+def test_progress_off_a_terminal_is_plain_lines():
+    import io
+    from bezel.dataset.progress import Progress
+    stream = io.StringIO()
+    p = Progress(shards_total=3, shards_done=1, samples_total=10, samples_done=4, stream=stream)
+    p.advance(4)
+    p.advance(2)
+    p.show(final=True)
+    lines = stream.getvalue().splitlines()
+    assert "\r" not in stream.getvalue() and "\x1b" not in stream.getvalue()
+    assert lines[0].startswith("bezel.dataset: [") and "2/3 shards, 8/10 samples" in lines[0]
+    assert "3/3 shards, 10/10 samples" in lines[-1] and "samples/s" in lines[-1]
+    assert len(lines) == 2  # the second advance came within PLAIN_EVERY_S: no line of its own

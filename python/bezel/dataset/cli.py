@@ -302,6 +302,10 @@ def main(argv=None) -> int:
         return fail(1, f"{e}; the finished shards are kept: rerun the same command to resume")
     except OSError as e:
         return fail(1, f"output folder '{args.out}': {e.strerror or e}")
+    except KeyboardInterrupt:
+        err.write("\nbezel.dataset: interrupted; the finished shards are kept: rerun the same "
+                  "command to resume\n")
+        return 130
     if not args.quiet:
         err.write(f"bezel.dataset: {stats['samples']} samples in {stats['shards']} shards, "
                   f"{stats['seconds']:.1f} s ({stats['samples_per_s']:.1f} samples/s); "

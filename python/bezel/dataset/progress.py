@@ -48,7 +48,8 @@ class Progress:
         now = time.monotonic()
         if self.tty:
             if final or now - self.last >= REDRAW_S:
-                self.stream.write("\r" + self.line() + ("\n" if final else ""))
+                # \x1b[K clears what a longer previous line left to the right.
+                self.stream.write("\r" + self.line() + "\x1b[K" + ("\n" if final else ""))
                 self.stream.flush()
                 self.last = now
         elif final or now - self.last >= PLAIN_EVERY_S:
