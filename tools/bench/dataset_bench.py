@@ -17,7 +17,9 @@ colour table, bezel.encode_png.
 
 Figures:
   render-only   one process, no Dask: samples drawn per second (draw) and drawn + encoded as PNG
-                (draw+png), best of --reps passes over --render-count samples.
+                (draw+png), best of --reps passes over --render-count samples; Pillow twice, with
+                its default PNG level (6) and with level 1 ("pillow-z1", bezel's deflate effort
+                on images this small).
   end-to-end    python3 -m bezel.dataset's driver on a LocalCluster of 1 and of 2 worker processes
                 (one thread each): samples/s from the first task submitted to the last shard
                 written (cluster start-up excluded), --count samples in shards of --shard-size.
@@ -52,8 +54,13 @@ LICENCES = ["GPL-1", "GPL-2", "GPL-3", "LGPL-2.1", "LGPL-3", "GFDL-1.3", "Apache
 
 
 class PillowRenderer(render.Renderer):
-    """The same samples drawn the way Pillow-based generators draw them."""
-    name = "pillow"
+    """The same samples drawn the way Pillow-based generators draw them. compress_level: zlib's
+    level for Pillow's PNG encoder (Pillow's default is 6; 1 is what bezel's "default" uses on
+    images this small, so "pillow-z1" compares the drawing with equal deflate effort)."""
+
+    def __init__(self, compress_level: int = 6):
+        self.compress_level = compress_level
+        self.name = "pillow" if compress_level == 6 else f"pillow-z{compress_level}"
 
     def draw(self, text, p, config):
         from PIL import Image, ImageDraw, ImageFont
@@ -80,7 +87,7 @@ class PillowRenderer(render.Renderer):
 
     def encode(self, image, config):
         buf = io.BytesIO()
-        image.save(buf, "PNG")
+        image.save(buf, "PNG", compress_level=self.compress_level)
         return buf.getvalue()
 
 
@@ -147,7 +154,7 @@ def main() -> int:
     try:
         corpus = corpus_mod.read_corpus(a.corpus or licence_corpus(scratch))
         config = make_config(a.count, a.shard_size)
-        renderers = [render.BezelRenderer(), PillowRenderer()]
+        renderers = [render.BezelRenderer(), PillowRenderer(), PillowRenderer(1)]
         if a.profile:
             r = renderers[0] if a.profile == "bezel" else renderers[1]
             prof = cProfile.Profile()
@@ -164,14 +171,15 @@ def main() -> int:
         rows = {}
         for r in renderers:
             rows[r.name] = render_only(r, corpus, config, a.render_count, a.reps)
-            print(f"render-only {r.name:6}: draw {rows[r.name][0]:8.0f} /s, draw+png "
+            print(f"render-only {r.name:9}: draw {rows[r.name][0]:8.0f} /s, draw+png "
                   f"{rows[r.name][1]:8.0f} /s", flush=True)
         for col, what in ((0, "draw"), (1, "draw+png")):
-            print(f"render-only ratio bezel/pillow ({what}): "
-                  f"{rows['bezel'][col] / rows['pillow'][col]:.2f}")
+            for peer in ("pillow", "pillow-z1"):
+                print(f"render-only ratio bezel/{peer} ({what}): "
+                      f"{rows['bezel'][col] / rows[peer][col]:.2f}")
         for workers in (int(w) for w in a.workers.split(",")):
             rates = {}
-            for r in renderers:
+            for r in renderers[:2]:
                 rates[r.name] = end_to_end(r, corpus, config, workers, scratch)
                 print(f"end-to-end {workers} worker(s) {r.name:6}: {rates[r.name]:8.0f} samples/s",
                       flush=True)

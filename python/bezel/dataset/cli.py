@@ -184,7 +184,7 @@ def build_parser() -> argparse.ArgumentParser:
     where = p.add_mutually_exclusive_group()
     where.add_argument("--workers", metavar="N",
                        help="worker processes of the local Dask cluster, one thread each "
-                            "(default: the number of CPUs)")
+                            "(default: the number of CPUs this process may use)")
     where.add_argument("--scheduler", metavar="ADDR",
                        help="use the running Dask cluster at ADDR (tcp://HOST:PORT) instead; its "
                             "workers must import bezel and see DIR at the same path")
@@ -221,7 +221,7 @@ def settings(args) -> dict:
     if args.scheduler is not None:
         s["scheduler"] = check_scheduler(args.scheduler)
     else:
-        default = str(os.cpu_count() or 1)
+        default = str(len(os.sched_getaffinity(0)))  # the CPUs this process may use
         s["workers"] = _int(args.workers if args.workers is not None else default, "--workers",
                             1, MAX_WORKERS)
     timeout = _number(args.connect_timeout, "--connect-timeout")

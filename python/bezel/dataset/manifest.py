@@ -3,7 +3,8 @@ same dataset.
 
 It records every setting that decides the bytes of the output (RunConfig), the SHA-256 of the
 corpus and of each font (a file edited in place is a different dataset), the format version and
-bezel's version. It does not record what only decides the speed (workers, scheduler). A rerun
+bezel's version. It does not record what only decides the speed (workers, scheduler) or where
+the inputs are (the corpus and fonts may move: their contents are what counts). A rerun
 whose manifest differs is refused, naming the settings that differ.
 """
 from __future__ import annotations
@@ -30,6 +31,8 @@ def manifest_dict(config: RunConfig, corpus_sha256: str, font_sha256: list, rend
          "library_version": library_version, "corpus_sha256": corpus_sha256,
          "skip_invalid": skip_invalid}
     for field in dataclasses.fields(config):
+        if field.name == "fonts":
+            continue  # where the fonts are does not matter; what they hold does (font_sha256)
         value = getattr(config, field.name)
         d[field.name] = list(value) if isinstance(value, tuple) else value
     d["font_sha256"] = list(font_sha256)

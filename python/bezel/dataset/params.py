@@ -4,7 +4,8 @@ A sample's parameters come from its own generator, numpy.random.default_rng([see
 sample i is the same whichever worker draws it, in whichever order, and a rerun of one shard
 redraws exactly what the first run drew. The draws happen in a fixed order (font, size, margin,
 angle, background, foreground), each one always drawn, so that no setting shifts the stream of
-another; the manifest's FORMAT_VERSION changes whenever this order or a formula changes.
+another; the manifest's FORMAT_VERSION changes whenever this order or a formula changes. Any
+numpy reproduces a sample's parameters: default_rng([seed, index]).random(10), then draw_params.
 """
 from __future__ import annotations
 
@@ -21,6 +22,8 @@ FORMAT_VERSION = 1
 MAX_MARGIN_PX = 1024
 # Largest |angle| in degrees: any rotation is drawn exactly; past 180 the range repeats itself.
 MAX_ANGLE_DEG = 180.0
+# Uniform floats drawn per sample (see draw_params).
+DRAWS = 10
 # Angles are drawn in steps of 10^-ANGLE_DECIMALS degrees, so the angle in a label (printed to
 # that many decimals) is exactly the angle drawn.
 ANGLE_DECIMALS = 2
@@ -66,17 +69,24 @@ class SampleParams:
 
 
 def draw_params(config: RunConfig, index: int) -> SampleParams:
-    """The parameters of sample `index`, a pure function of (config, index)."""
-    rng = np.random.default_rng([config.seed, index])
-    font = int(rng.integers(len(config.fonts)))
-    size = config.sizes[int(rng.integers(len(config.sizes)))]
-    margin = int(rng.integers(config.margin[0], config.margin[1] + 1))
+    """The parameters of sample `index`, a pure function of (config, index).
+
+    One call draws DRAWS uniform floats u in [0, 1) (creating the generator costs far more
+    than drawing, and a single call keeps the stream's layout fixed); a choice among n values
+    is floor(u n), uniform up to the 2^-53 granularity of u. In order: font, size, margin,
+    angle, background (3 channels), foreground (3 channels); gray uses the first channel."""
+    u = np.random.default_rng([config.seed, index]).random(DRAWS).tolist()
+
+    def pick(k: int, lo: int, hi: int) -> int:
+        return lo + min(int(u[k] * (hi - lo + 1)), hi - lo)
+
     steps = int(round(config.angle * 10 ** ANGLE_DECIMALS))
-    angle = int(rng.integers(-steps, steps + 1)) / 10 ** ANGLE_DECIMALS
+    angle = pick(3, -steps, steps) / 10 ** ANGLE_DECIMALS
     channels = 3 if config.colour == "rgb" else 1
-    bg = rng.integers(config.background[0], config.background[1] + 1, size=3)
-    fg = rng.integers(config.foreground[0], config.foreground[1] + 1, size=3)
-    return SampleParams(index=index, font=font, size=size, margin=margin,
-                        angle=angle + 0.0,  # + 0.0: no "-0.0" in labels
-                        background=tuple(int(v) for v in bg[:channels]),
-                        foreground=tuple(int(v) for v in fg[:channels]))
+    return SampleParams(
+        index=index, font=pick(0, 0, len(config.fonts) - 1),
+        size=config.sizes[pick(1, 0, len(config.sizes) - 1)],
+        margin=pick(2, config.margin[0], config.margin[1]),
+        angle=angle + 0.0,  # + 0.0: no "-0.0" in labels
+        background=tuple(pick(4 + c, *config.background) for c in range(channels)),
+        foreground=tuple(pick(7 + c, *config.foreground) for c in range(channels)))

@@ -15,6 +15,7 @@ so that an unrotated text sits on the pixel grid as render() places it.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 import warnings
 
@@ -29,6 +30,10 @@ def library_limit(name: str) -> float:
     import bezel
     limits = getattr(bezel, "limits", None) or bezel._bezel.limits
     return limits[name]
+
+# Colour tables kept per process (256 bytes each for gray, 768 for RGB): gray runs have at
+# most 256 x 256 pairs; RGB pairs rarely repeat, and the cache just stays at its bound.
+COLOUR_TABLES_CACHED = 4096
 
 _worker_cache: dict = {}
 
@@ -104,6 +109,7 @@ def layout_geometry(page_w, page_h, ink, angle_deg, margin):
     return width, height, (c, -s, s, c, float(e), float(f)), box, quad, ink_box
 
 
+@functools.lru_cache(maxsize=COLOUR_TABLES_CACHED)
 def colour_table(background: tuple, foreground: tuple) -> np.ndarray:
     """The 256 colours of coverage 0..255 between background and foreground: level k is
     bg + round((fg - bg) k / 255), mixed in the encoded (sRGB) values as Pillow and cairo do.
@@ -115,12 +121,15 @@ def colour_table(background: tuple, foreground: tuple) -> np.ndarray:
     # Round half away from zero for either sign of fg - bg.
     mixed = bg + np.where(diff >= 0, (diff + 127) // 255, -((-diff + 127) // 255))
     table = mixed.astype(np.uint8)
-    return table[:, 0] if table.shape[1] == 1 else table
+    table = table[:, 0].copy() if table.shape[1] == 1 else table
+    table.flags.writeable = False  # shared by every sample with these colours
+    return table
 
 
 def composite(coverage: np.ndarray, background: tuple, foreground: tuple) -> np.ndarray:
-    """coverage (H, W) uint8 mixed into the colours: (H, W) gray or (H, W, 3) RGB uint8."""
-    return colour_table(background, foreground)[coverage]
+    """coverage (H, W) uint8 mixed into the colours: (H, W) gray or (H, W, 3) RGB uint8.
+    (np.take: the same as table[coverage], in about half the time.)"""
+    return np.take(colour_table(background, foreground), coverage, axis=0)
 
 
 class Renderer:
