@@ -61,7 +61,7 @@ def test_colours_are_the_drawn_levels():
     r = render.BezelRenderer()
     out = r.render("Colour", sample(background=(250, 240, 10), foreground=(20, 30, 200)), config)
     pixels = decode_png(out.png)
-    assert pixels.shape == (out.height, out.width, 3)
+    assert pixels.shape == (out.geometry.height, out.geometry.width, 3)
     assert pixels[0, 0].tolist() == [250, 240, 10]
     # Fully covered pixels exist in a 24 px stem, and have exactly the foreground colour.
     assert ([20, 30, 200] == pixels.reshape(-1, 3)).all(axis=1).any()

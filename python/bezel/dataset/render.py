@@ -23,6 +23,11 @@ import numpy as np
 
 from .params import RunConfig, SampleParams
 
+# Colour tables kept per process (256 bytes each for gray, 768 for RGB): gray runs have at
+# most 256 x 256 pairs; RGB pairs rarely repeat, and the cache just stays at its bound.
+COLOUR_TABLES_CACHED = 4096
+
+_worker_cache: dict = {}
 
 
 def library_limit(name: str) -> float:
@@ -30,12 +35,6 @@ def library_limit(name: str) -> float:
     import bezel
     limits = getattr(bezel, "limits", None) or bezel._bezel.limits
     return limits[name]
-
-# Colour tables kept per process (256 bytes each for gray, 768 for RGB): gray runs have at
-# most 256 x 256 pairs; RGB pairs rarely repeat, and the cache just stays at its bound.
-COLOUR_TABLES_CACHED = 4096
-
-_worker_cache: dict = {}
 
 
 def worker_cached(key, make):
@@ -54,6 +53,7 @@ class SampleError(Exception):
 
 @dataclasses.dataclass
 class Geometry:
+    """A sample image's size and label boxes, image pixels, y down."""
     width: int
     height: int
     box: list        # [x0, y0, x1, y1]: axis-aligned box of the rotated layout box
@@ -64,11 +64,7 @@ class Geometry:
 @dataclasses.dataclass
 class Rendered:
     png: bytes
-    width: int
-    height: int
-    box: list        # [x0, y0, x1, y1]: axis-aligned box of the rotated layout box
-    quad: list       # the layout box's corners, rotated: [[x, y] * 4], from its top left, clockwise
-    ink_box: list    # [x0, y0, x1, y1] of the drawn outlines, or None when nothing is inked
+    geometry: Geometry
 
 
 def rotation(angle_deg: float) -> tuple:
@@ -152,8 +148,7 @@ class Renderer:
         if drawn is None:
             return None
         image, g = drawn
-        return Rendered(png=self.encode(image, config), width=g.width, height=g.height,
-                        box=g.box, quad=g.quad, ink_box=g.ink_box)
+        return Rendered(png=self.encode(image, config), geometry=g)
 
 
 class BezelRenderer(Renderer):

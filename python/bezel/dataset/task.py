@@ -38,13 +38,14 @@ class ShardError(Exception):
     """A sample of the shard could not be drawn: names the sample and its corpus line."""
 
 
-def label_of(params, text: str, line: int, font_name: str, r) -> dict:
+def label_of(params, text: str, line: int, font_name: str, g) -> dict:
+    """The JSONL label of a sample (docs/dataset.md#labels): keys in this order."""
     colour = (lambda c: c[0] if len(c) == 1 else list(c))
     return {"image": image_name(params.index), "index": params.index, "line": line,
             "text": text, "font": font_name, "size": params.size, "angle": params.angle,
             "margin": params.margin, "background": colour(params.background),
-            "foreground": colour(params.foreground), "width": r.width, "height": r.height,
-            "box": r.box, "quad": r.quad, "ink_box": r.ink_box}
+            "foreground": colour(params.foreground), "width": g.width, "height": g.height,
+            "box": g.box, "quad": g.quad, "ink_box": g.ink_box}
 
 
 def render_shard(out_dir: str, shard: int, samples: list, config: RunConfig, renderer) -> tuple:
@@ -71,6 +72,6 @@ def render_shard(out_dir: str, shard: int, samples: list, config: RunConfig, ren
             left_out += 1
             continue
         images.append((image_name(index), r.png))
-        labels.append(label_of(params, text, line, config.font_names[params.font], r))
+        labels.append(label_of(params, text, line, config.font_names[params.font], r.geometry))
     write_shard(out_dir, shard, images, labels)
     return shard, len(labels), left_out, busy
