@@ -104,6 +104,17 @@ def test_font_list_errors_name_the_input(tmp_path):
 
 # --- sample parameters ---------------------------------------------------------------------------
 
+def test_uniforms_are_blake2b_of_seed_and_index():
+    # The documented stream (params.py): anyone can recompute a sample's numbers.
+    import hashlib
+    digest = hashlib.blake2b(b"7:42", digest_size=64, person=b"bezel.dataset").digest()
+    u = params.uniforms(7, 42)
+    assert len(u) == params.DRAWS
+    assert u[0] == int.from_bytes(digest[:6], "big") / 2 ** 48
+    assert u[9] == int.from_bytes(digest[54:60], "big") / 2 ** 48
+    assert all(0 <= x < 1 for x in u)
+
+
 def test_parameters_depend_only_on_seed_and_index():
     c = config()
     forward = [params.draw_params(c, i) for i in range(50)]
@@ -171,20 +182,24 @@ def test_rotated_box_contains_the_rotated_quad():
     assert abs(side - 200) < 2e-3  # a rotation keeps lengths (labels are rounded to 1e-3)
 
 
-def test_colour_table_ends_at_background_and_foreground():
-    table = render.colour_table((200,), (30,))
-    assert table.shape == (256,) and table[0] == 200 and table[255] == 30
-    assert np.all(np.diff(table.astype(int)) <= 0)
-    rgb = render.colour_table((255, 0, 10), (0, 255, 10))
-    assert rgb.shape == (256, 3) and list(rgb[0]) == [255, 0, 10] and list(rgb[255]) == [0, 255, 10]
-    assert list(rgb[128]) == [127, 128, 10]  # 255 * 128/255 = 128 up, 127 down: rounds half away
+def test_composite_mixes_by_rounded_coverage():
+    k = np.arange(256, dtype=np.uint8)[None, :]
+    for bg, fg in ((200, 30), (30, 200), (255, 0), (7, 7), (0, 255)):
+        out = render.composite(k, (bg,), (fg,))
+        assert out.dtype == np.uint8 and out.shape == (1, 256)
+        # Reference: bg + (fg - bg) k / 255, rounded half away from bg, in exact integers.
+        d = abs(fg - bg)
+        ref = [bg + (1 if fg >= bg else -1) * ((d * v * 2 + 255) // 510) for v in range(256)]
+        assert out[0].tolist() == ref
+        assert out[0, 0] == bg and out[0, 255] == fg
 
 
-def test_composite_maps_every_pixel_through_the_table():
+def test_composite_rgb_mixes_each_channel():
     coverage = np.array([[0, 255], [128, 64]], dtype=np.uint8)
-    out = render.composite(coverage, (255,), (0,))
-    assert out.dtype == np.uint8 and out.tolist() == [[255, 0], [127, 191]]
-    assert render.composite(coverage, (1, 2, 3), (4, 5, 6)).shape == (2, 2, 3)
+    out = render.composite(coverage, (255, 0, 10), (0, 255, 10))
+    assert out.shape == (2, 2, 3) and out.dtype == np.uint8
+    assert out[0, 0].tolist() == [255, 0, 10] and out[0, 1].tolist() == [0, 255, 10]
+    assert out[1, 0].tolist() == [127, 128, 10]  # 255 * 128/255 = 128 either way
 
 
 # --- shard files and manifest -----------------------------------------------------------------------

@@ -141,7 +141,7 @@ def end_to_end(renderer, corpus, config, workers: int, scratch: str) -> float:
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--count", type=int, default=6000, help="samples of each end-to-end run")
-    ap.add_argument("--shard-size", type=int, default=250)
+    ap.add_argument("--shard-size", type=int, default=1000)
     ap.add_argument("--render-count", type=int, default=2000, help="samples of a render-only pass")
     ap.add_argument("--reps", type=int, default=3, help="render-only passes (best is kept)")
     ap.add_argument("--workers", default="1,2", help="worker counts of the end-to-end runs")
