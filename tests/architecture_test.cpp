@@ -245,23 +245,26 @@ TEST(Architecture, CliUsesThePublicLibraryOnly) {
     }
 }
 
-// integrations/ (bezel_imgui and its example) are consumers: public headers only, and none of the
-// third-party libraries bezel hides (they may include their own toolkit's headers).
-TEST(Architecture, IntegrationsUseThePublicLibraryOnly) {
-    int files = 0;
-    for (const auto& e : fs::recursive_directory_iterator(kRoot / "integrations")) {
-        const std::string ext = e.path().extension().string();
-        if (ext != ".cpp" && ext != ".hpp") continue;
-        ++files;
-        const std::string where = fs::relative(e.path(), kRoot).string();
-        for (const std::string& dir : includes(e.path(), kPrivateInclude)) {
-            EXPECT_FALSE(fs::is_directory(kRoot / "lib/src" / dir))
-                << where << " includes a private header of module " << dir;
+// integrations/ (bezel_imgui and its example) and python/src (the pybind11 extension) are
+// consumers: public headers only, and none of the third-party libraries bezel hides (they may
+// include their own toolkit's headers: Dear ImGui's, pybind11's).
+TEST(Architecture, IntegrationsAndPythonUseThePublicLibraryOnly) {
+    for (const char* dir : {"integrations", "python/src"}) {
+        int files = 0;
+        for (const auto& e : fs::recursive_directory_iterator(kRoot / dir)) {
+            const std::string ext = e.path().extension().string();
+            if (ext != ".cpp" && ext != ".hpp") continue;
+            ++files;
+            const std::string where = fs::relative(e.path(), kRoot).string();
+            for (const std::string& d : includes(e.path(), kPrivateInclude)) {
+                EXPECT_FALSE(fs::is_directory(kRoot / "lib/src" / d))
+                    << where << " includes a private header of module " << d;
+            }
+            for (const std::string& h : includes(e.path(), kSystemInclude))
+                EXPECT_EQ(third_party(h), "") << where << " includes <" << h << ">";
         }
-        for (const std::string& h : includes(e.path(), kSystemInclude))
-            EXPECT_EQ(third_party(h), "") << where << " includes <" << h << ">";
+        EXPECT_GT(files, 0) << dir;
     }
-    EXPECT_GT(files, 0);
 }
 
 }  // namespace
