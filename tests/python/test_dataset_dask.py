@@ -14,6 +14,9 @@ import pytest
 from dataset_helpers import (CANTARELL, DEJAVU, decode_png, dataset_files, package_env,
                              read_images, read_labels, run_dataset, write_corpus)
 
+# tornado (under distributed) warns about its own event loop use; nothing of ours.
+pytestmark = pytest.mark.filterwarnings("ignore:make_current is deprecated:DeprecationWarning")
+
 COUNT = 14        # the corpus has 8 samples: the last 6 go round it again
 SHARD_SIZE = 4    # 4 shards, the last one short
 
@@ -140,11 +143,11 @@ def test_killed_worker_loses_no_shard(reference, corpus, tmp_path):
     assert dataset_files(out) == dataset_files(reference)
 
 
-def test_undrawable_sample_stops_the_run_naming_it(corpus, tmp_path):
+def test_undrawable_sample_stops_the_run_naming_it(corpus, scheduler, tmp_path):
     # 16384 px is a valid em size, but a line of text at it is wider than any image bezel fills.
     out = tmp_path / "ds"
     r = run_dataset([corpus, "--fonts", DEJAVU, "--out", out, "--sizes", "16384", "--count", 1,
-                     "--workers", 1])
+                     "--scheduler", scheduler])
     assert r.returncode == 1, r.stderr
     assert "sample 0 (corpus line 1, font 'DejaVuSans.ttf', 16384 px)" in r.stderr
     assert "more than 16384 px" in r.stderr and "Traceback" not in r.stderr
