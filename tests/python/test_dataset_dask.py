@@ -152,3 +152,16 @@ def test_undrawable_sample_stops_the_run_naming_it(corpus, scheduler, tmp_path):
     assert "sample 0 (corpus line 1, font 'DejaVuSans.ttf', 16384 px)" in r.stderr
     assert "more than 16384 px" in r.stderr and "Traceback" not in r.stderr
     assert not [n for n in os.listdir(out) if n.startswith("shard")]
+
+
+def test_skip_invalid_drops_bad_lines_and_says_how_many(scheduler, tmp_path):
+    corpus = tmp_path / "mixed.txt"
+    corpus.write_bytes(b"first line\nbad \xff byte\nthird line\n\xc0\xaf overlong\nfifth\n")
+    out = tmp_path / "ds"
+    r = run_dataset([corpus, "--fonts", DEJAVU, "--out", out, "--skip-invalid", "--shard-size",
+                     2, "--scheduler", scheduler])
+    assert r.returncode == 0, r.stderr
+    assert "skipped 2 corpus lines of invalid UTF-8 (--skip-invalid)" in r.stderr
+    labels = read_labels(out)
+    assert [(l["line"], l["text"]) for l in labels] == [(1, "first line"), (3, "third line"),
+                                                        (5, "fifth")]

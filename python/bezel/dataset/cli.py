@@ -13,6 +13,7 @@ import re
 import socket
 import sys
 import tempfile
+import textwrap
 
 from . import corpus as corpus_mod
 from . import driver, fonts as fonts_mod, manifest as manifest_mod, shards as shards_mod
@@ -138,10 +139,11 @@ def check_output_folder(out: str) -> None:
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog=PROG, formatter_class=argparse.RawDescriptionHelpFormatter, epilog=EPILOG,
-        description="Render a text corpus into a sharded, labelled image dataset with bezel, "
-                    "in parallel on Dask. Each sample's font, size, margin, angle and colours "
-                    "are drawn from a generator seeded by (--seed, sample index): the same "
-                    "arguments give the same bytes, whatever the number of workers.")
+        description=textwrap.fill(
+            "Render a text corpus into a sharded, labelled image dataset with bezel, in "
+            "parallel on Dask. Each sample's font, size, margin, angle and colours are drawn "
+            "from a generator seeded by (--seed, sample index): the same arguments give the "
+            "same bytes, whatever the number of workers.", width=78))
     p.add_argument("corpus", metavar="CORPUS",
                    help="UTF-8 text file, one sample per line (blank lines are skipped)")
     p.add_argument("--fonts", required=True, metavar="F[,F...]",
