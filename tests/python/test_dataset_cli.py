@@ -26,7 +26,8 @@ def test_help_documents_every_option():
     assert r.returncode == 0
     for option in ("--fonts", "--out", "--sizes", "--seed", "--count", "--shard-size", "--margin",
                    "--angle", "--background", "--foreground", "--colour", "--png-compression",
-                   "--skip-invalid", "--missing-glyphs", "--workers", "--scheduler", "--connect-timeout", "--quiet"):
+                   "--skip-invalid", "--missing-glyphs", "--workers", "--scheduler",
+                   "--connect-timeout", "--quiet"):
         assert option in r.stdout
     assert "docs/dataset.md" in r.stdout
 

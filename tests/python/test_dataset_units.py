@@ -202,7 +202,7 @@ def test_composite_rgb_mixes_each_channel():
     assert out[1, 0].tolist() == [127, 128, 10]  # 255 * 128/255 = 128 either way
 
 
-# --- shard files and manifest -----------------------------------------------------------------------
+# --- shard files and manifest ----------------------------------------------------------------
 
 def test_tar_is_deterministic_and_readable(tmp_path):
     members = [("000000001.png", b"abc"), ("000000002.png", b"")]

@@ -104,7 +104,8 @@ def licence_corpus(folder: str) -> str:
 
 
 def make_config(count: int, shard_size: int) -> params.RunConfig:
-    return params.RunConfig(fonts=tuple(FONTS), font_names=tuple(os.path.basename(f) for f in FONTS),
+    names = tuple(os.path.basename(f) for f in FONTS)
+    return params.RunConfig(fonts=tuple(FONTS), font_names=names,
                             sizes=(16, 24, 32), seed=1, count=count, shard_size=shard_size,
                             margin=(2, 8), angle=3.0, background=(160, 255), foreground=(0, 96),
                             colour="gray", png_compression="default", missing_glyphs="skip")
@@ -152,7 +153,7 @@ def main() -> int:
     ap.add_argument("--profile", choices=("bezel", "pillow"))
     a = ap.parse_args()
     import PIL
-    from PIL import ImageFont, features
+    from PIL import features
     scratch = tempfile.mkdtemp(prefix="bezel-dataset-bench-")
     try:
         corpus = corpus_mod.read_corpus(a.corpus or licence_corpus(scratch))

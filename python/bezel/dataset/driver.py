@@ -55,7 +55,8 @@ def dask_client(workers: int | None, scheduler: str | None, connect_timeout: flo
         try:
             client = Client(scheduler, timeout=connect_timeout)
         except (OSError, TimeoutError, ValueError) as e:
-            raise SchedulerError(f"cannot connect to the Dask scheduler at '{scheduler}': {e}") from None
+            raise SchedulerError(f"cannot connect to the Dask scheduler at '{scheduler}': "
+                                 f"{e}") from None
         try:
             yield client
         finally:

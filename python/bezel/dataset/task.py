@@ -65,8 +65,9 @@ def render_shard(out_dir: str, shard: int, samples: list, config: RunConfig, ren
         try:
             r = renderer.render(text, params, config)
         except SampleError as e:
-            raise ShardError(f"sample {index} (corpus line {line}, font "
-                             f"'{config.font_names[params.font]}', {params.size} px): {e}") from None
+            font = config.font_names[params.font]
+            raise ShardError(f"sample {index} (corpus line {line}, font '{font}', "
+                             f"{params.size} px): {e}") from None
         busy += time.perf_counter() - start
         if r is None:
             left_out += 1
