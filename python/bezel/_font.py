@@ -198,6 +198,11 @@ class Font:
         self._core = _bezel.FontCore(sources, self._system_fonts)
         self._info: Dict[str, Any] = self._core.info()
 
+    # Pickling (multiprocessing, Dask workers): a Font is rebuilt from its sources, the paths
+    # or bytes it was made from, in the receiving process.
+    def __reduce__(self):
+        return (_rebuild_font, (self._sources, self._size, self._hinting, self._system_fonts))
+
     # --- Facts about the font ------------------------------------------------------------------
     @property
     def size(self) -> float:
@@ -409,3 +414,13 @@ class Font:
         h = self._hinting if hinting is None else _check.choice("hinting", hinting, HINTINGS)
         core, gid, font, advance = self._core.outline(key, by_char, s, h)
         return Outline(Path._wrap(core), advance, gid, font)
+
+
+def _rebuild_font(sources: list, size: float, hinting: str, system_fonts: bool) -> Font:
+    """A pickled Font: its checked sources (path or bytes, face index, variations) reopened."""
+    font = Font.__new__(Font)
+    font._size, font._hinting, font._system_fonts = size, hinting, system_fonts
+    font._sources = sources
+    font._core = _bezel.FontCore(sources, system_fonts)
+    font._info = font._core.info()
+    return font

@@ -82,6 +82,9 @@ class Path:
         """Enclosed area, positive for contours clockwise on screen (y down)."""
         return self._core.signed_area()
 
+    def __reduce__(self):
+        return (Path, (self.svg,))   # SVG data at 17 digits reads back bit for bit
+
     def __len__(self) -> int:
         return self._core.segment_count()
 

@@ -235,3 +235,47 @@ def test_private_layer_checks_its_arguments_too():
     for k, call in enumerate(calls):
         with pytest.raises(EXPECTED):
             call()
+
+
+# Fuzz-style: each keyword of each call given values from a pool of hostile ones, drawn by a
+# seeded generator: every call returns or raises one of the expected exceptions.
+HOSTILE = [None, -1, 0, NAN, math.inf, 1e9, 2**70, -(2**70), "", "\x00", "a" * 300, b"\xff\xfe",
+           [], [1, 2], (1, 2, 3, 4, 5, 6, 7), {}, object(), True, 1.5, (0, 0), (NAN, 0)]
+RENDER_KEYWORDS = ["size", "width", "margin", "line_height", "align", "direction", "features",
+                   "script", "language", "foreground", "background", "slant", "bold", "color",
+                   "palette", "custom_palette", "rendering", "gamma", "contrast", "lcd", "hinting",
+                   "strict", "mode"]
+GLYPH_KEYWORDS = ["size", "hinting", "slant", "bold", "offset", "color", "palette",
+                  "custom_palette", "foreground", "strict", "mode"]
+FILL_KEYWORDS = ["transform", "rule", "tolerance", "out"]
+
+
+def test_random_hostile_keywords_never_crash():
+    import random
+    import warnings
+    rng = random.Random(37)
+    f = font()
+    calls = [
+        (lambda kw: f.render("Ab", **kw), RENDER_KEYWORDS),
+        (lambda kw: f.text_path("Ab", **{k: v for k, v in kw.items()
+                                         if k in ("size", "width", "margin", "line_height",
+                                                  "align", "direction", "features", "script",
+                                                  "language", "slant", "hinting", "strict")}),
+         RENDER_KEYWORDS),
+        (lambda kw: f.glyph("g", **kw), GLYPH_KEYWORDS),
+        (lambda kw: bezel.fill(square(), 6, 6, **kw), FILL_KEYWORDS),
+    ]
+    outcomes = {"ok": 0, "raised": 0}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for _ in range(600):
+            call, keywords = rng.choice(calls)
+            chosen = rng.sample(keywords, rng.randint(1, 3))
+            kw = {k: rng.choice(HOSTILE) for k in chosen}
+            try:
+                call(kw)
+                outcomes["ok"] += 1
+            except EXPECTED + (UnicodeError,) as e:
+                assert str(e), kw
+                outcomes["raised"] += 1
+    assert outcomes["raised"] > 300 and outcomes["ok"] > 0, outcomes

@@ -203,3 +203,44 @@ def test_custom_palette_equals_the_cli(cli):
     png = cli("render", COLR, "\U0001F601", "--font-size", "48", "--margin", "0",
               "--no-system-fonts", "--custom-palette", "4=blue,10=#008000", "-O", "png")
     assert np.array_equal(recoloured, np.array(Image.open(io.BytesIO(png)).convert("RGBA")))
+
+
+def test_fonts_and_paths_pickle():
+    import pickle
+    font = bezel.Font(DEJAVU, size=21, hinting="light", fallback=[bezel.Font(CJK)])
+    again = pickle.loads(pickle.dumps(font))
+    assert again.size == 21 and again.hinting == "light" and again.fonts == font.fonts
+    assert np.array_equal(again.render("aあ"), font.render("aあ"))
+    with open(DEJAVU, "rb") as f:
+        from_bytes = bezel.Font(f.read(), size=12)
+    assert np.array_equal(pickle.loads(pickle.dumps(from_bytes)).render("b"), from_bytes.render("b"))
+    path = font.outline("S").path
+    assert pickle.loads(pickle.dumps(path)) == path
+
+
+def test_missing_glyph_warnings_follow_the_warnings_filters(dejavu):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", bezel.MissingGlyphWarning)
+        with pytest.raises(bezel.MissingGlyphWarning):
+            dejavu.render("あ")
+        with pytest.raises(bezel.MissingGlyphWarning):
+            dejavu.glyph("あ")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bezel.MissingGlyphWarning)
+        assert dejavu.glyph("あ").gid == 0   # the .notdef box
+
+
+def test_system_fonts_are_asked_only_when_enabled():
+    # Off (the default), a character no listed font has is always the .notdef box, whatever the
+    # machine's fonts. On, fontconfig is asked: a system font draws it (appended to the list),
+    # or, where none has it (ctest runs with a configuration without fonts), it stays missing.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", bezel.MissingGlyphWarning)
+        alone = bezel.Font(DEJAVU, size=16).glyph("あ")
+    assert (alone.font, alone.gid) == (0, 0)
+    font = bezel.Font(DEJAVU, size=16, system_fonts=True)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        glyph = font.glyph("あ")
+    missing = [w for w in caught if issubclass(w.category, bezel.MissingGlyphWarning)]
+    assert (glyph.font >= 1 and glyph.gid > 0 and not missing) or (glyph.gid == 0 and missing)
