@@ -5,8 +5,9 @@
 // takes about a fifth of zlib level 1's time for a slightly smaller file (docs/perf-log.md,
 // "Dataset speed round").
 //
-// Never a row filter (no per-row filter search). Measured on the benchmark page (tools/bench/render_page.txt, 716×2361 gray): no filter encodes faster than
-// SUB and gives a smaller file (266 KB against 285 KB: the flat background is long runs of one
+// Never a row filter (no per-row filter search). Measured on the benchmark page
+// (tools/bench/render_page.txt, 716×2361 gray): no filter encodes faster than SUB and gives a
+// smaller file (266 KB against 285 KB: the flat background is long runs of one
 // byte either way, and SUB turns glyph edges into more distinct values); Z_RLE was larger
 // (548 KB) and no faster.
 //

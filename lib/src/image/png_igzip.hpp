@@ -17,7 +17,8 @@ inline constexpr std::size_t kMaxIgzipScanlineBytes = std::size_t{1} << 31;
 // A PNG (8 bits a sample, PNG colour type `color_type`, no interlace) of `height` scanlines of
 // `width` pixels held in scanlines[0, bytes): each row its filter byte, then its samples, as
 // the IDAT stream holds them. Deflated by igzip as one stream at the level `compression` names
-// (Fast or Default; image.hpp); bytes <= kMaxIgzipScanlineBytes. Errors: deflate failure (the caller has checked the size).
+// (Fast or Default; image.hpp); bytes <= kMaxIgzipScanlineBytes. Errors: deflate failure
+// (the caller has checked the size).
 Expected<std::vector<std::uint8_t>> encode_png_igzip(int width, int height,
                                                      std::uint8_t color_type,
                                                      const std::uint8_t* scanlines,
