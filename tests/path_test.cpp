@@ -268,6 +268,33 @@ TEST(PathBoxes, TightBoundsContainTheCurvesAndTouchThem) {
     EXPECT_TRUE(Path{}.bounds().is_empty());
 }
 
+// bounds() solves only the curves whose control points leave the box of the end points; the
+// plain reference solves every segment. Same box (to rounding of the skipped curves' extrema,
+// which lie inside the hull), lone Moves and Closes included.
+TEST(PathBoxes, BoundsEqualTheUnionOfEverySegmentsTightBox) {
+    std::mt19937_64 rng(37);
+    for (int trial = 0; trial < 300; ++trial) {
+        Path p = random_path(rng);
+        if (trial % 3 == 0) p.move_to({1000, -1000});  // a trailing Move that starts nothing
+        Rect reference = Rect::empty();
+        for (const PathSeg& s : p.segments()) {
+            const Rect box = s.kind == SegKind::Line   ? s.as_line().bounding_box()
+                             : s.kind == SegKind::Quad ? s.as_quad().bounding_box()
+                                                       : s.as_cubic().bounding_box();
+            reference = reference.union_with(box);
+        }
+        const Rect b = p.bounds();
+        ASSERT_NEAR(b.x0, reference.x0, 1e-12) << trial;
+        ASSERT_NEAR(b.y0, reference.y0, 1e-12) << trial;
+        ASSERT_NEAR(b.x1, reference.x1, 1e-12) << trial;
+        ASSERT_NEAR(b.y1, reference.y1, 1e-12) << trial;
+    }
+    Path lone;
+    lone.move_to({5, 5});
+    lone.close();
+    EXPECT_TRUE(lone.bounds().is_empty());
+}
+
 TEST(PathBoxes, BoundsOfACubicBulgeAreExact) {
     Path p;  // symmetric arch: y extreme at t = ½, y = ¾·(−40) = −30
     p.move_to({0, 0});

@@ -110,6 +110,11 @@ def transform(value: Any) -> Optional[Tuple[float, ...]]:
     """An affine map (a, b, c, d, e, f) as SVG's matrix(): x' = a·x + c·y + e, y' = b·x + d·y + f."""
     if value is None:
         return None
+    # The common case first, without the per-entry ABC checks below (several µs a call, the
+    # dataset renderer makes two a sample): a tuple of 6 finite floats is returned as it is.
+    if (type(value) is tuple and len(value) == 6 and all(type(v) is float for v in value)
+            and all(map(math.isfinite, value))):
+        return value
     if isinstance(value, (str, bytes)) or not isinstance(value, Iterable):
         raise TypeError(f"transform: expected 6 numbers (a, b, c, d, e, f), got {type_name(value)}")
     entries = list(value)

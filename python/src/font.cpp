@@ -14,6 +14,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -38,6 +39,11 @@ namespace {
 // kDefaultGlyphCacheBytes). Threads beyond it still render; their renderers are dropped after the
 // call and made again (a few milliseconds) by the next.
 constexpr std::size_t kMaxIdleWorkers = 16;
+
+// Glyph outlines a renderer keeps for text_path (Worker::outlines): a few scripts' worth at a
+// few sizes (Latin text at 3 sizes in 2 fonts is ~600); a glyph path is ~1-5 KB, so at most a
+// few MB a renderer. When full it is emptied and refilled.
+constexpr std::size_t kMaxCachedOutlines = 2048;
 
 static_assert(sizeof(Rgba8) == 4, "an Image row is width × 4 bytes, R G B A");
 
@@ -250,6 +256,24 @@ struct Worker {
     TextRenderer renderer;
     std::vector<std::unique_ptr<GlyphRasterizer>> rasterizers;
     std::size_t warnings_reported = 0;   // of renderer.fonts().warnings()
+
+    // text_path's glyph outlines as placed (scaled, hinted, slanted), so that a glyph is loaded
+    // from FreeType once, not on every call that draws it. They hold for the call options'
+    // variation settings `outlines_variations` (the fonts' own are fixed): other settings
+    // empty the cache first. At most kMaxCachedOutlines.
+    struct OutlineKey {
+        std::uint16_t font;
+        GlyphId gid;
+        double size_px;
+        Hinting hinting;
+        double slant;
+        bool operator<(const OutlineKey& o) const {
+            return std::tie(font, gid, size_px, hinting, slant) <
+                   std::tie(o.font, o.gid, o.size_px, o.hinting, o.slant);
+        }
+    };
+    std::map<OutlineKey, Path> outlines;
+    std::vector<VariationSetting> outlines_variations;
 
     GlyphRasterizer& rasterizer(std::size_t font) {
         if (rasterizers.size() <= font) rasterizers.resize(font + 1);
@@ -537,7 +561,8 @@ private:
         for (std::size_t i = 1; i < sources_.size(); ++i)
             take(fonts.add(sources_[i].face, sources_[i].variations));
         if (system_fonts_) fonts.set_fallback(system_fallback(fonts.font(0).family_name()));
-        return std::make_unique<Worker>(Worker{take(TextRenderer::open(std::move(fonts))), {}, 0});
+        return std::make_unique<Worker>(
+            Worker{take(TextRenderer::open(std::move(fonts))), {}, 0, {}, {}});
     }
 
     // A lease made with the GIL released (making a worker opens FreeType and HarfBuzz objects).
@@ -608,18 +633,29 @@ private:
         auto made = w.renderer.layout(utf8, o);
         if (!made) return made.error();
         layout = std::move(*made);
-        // Each glyph's outline is loaded once and placed at every pen that uses it.
-        std::map<std::pair<std::uint16_t, GlyphId>, Path> outlines;
+        // Each glyph's outline is loaded once (per renderer, while the variations stay) and
+        // placed at every pen that uses it.
+        const std::vector<VariationSetting>& variations = o.shape.variations;
+        const auto same = [](const VariationSetting& a, const VariationSetting& b) {
+            return a.tag == b.tag && a.value == b.value;
+        };
+        if (!std::equal(variations.begin(), variations.end(), w.outlines_variations.begin(),
+                        w.outlines_variations.end(), same)) {
+            w.outlines.clear();
+            w.outlines_variations = variations;
+        }
         const OutlineOptions outline_options{o.shape.size_px, o.hinting};
         const bool whole_pixel_pen = hints_horizontally(o.hinting);
         for (const PlacedGlyph& g : layout.glyphs) {
-            auto found = outlines.find({g.font, g.gid});
-            if (found == outlines.end()) {
+            const Worker::OutlineKey key{g.font, g.gid, o.shape.size_px, o.hinting, o.slant};
+            auto found = w.outlines.find(key);
+            if (found == w.outlines.end()) {
                 auto outline = fonts.font(g.font).outline(g.gid, outline_options);
                 if (!outline) return outline.error();
                 // The synthetic slant, as GlyphRasterizer applies it (glyph.hpp).
                 if (o.slant != 0) outline->path.transform(Affine::skew(-o.slant, 0));
-                found = outlines.emplace(std::pair{g.font, g.gid}, std::move(outline->path)).first;
+                if (w.outlines.size() >= kMaxCachedOutlines) w.outlines.clear();
+                found = w.outlines.emplace(key, std::move(outline->path)).first;
             }
             // Pens as TextRenderer places them for the hinting mode (text_renderer.hpp).
             const double x = whole_pixel_pen ? std::floor(g.x_px + 0.5) : g.x_px;

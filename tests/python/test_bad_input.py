@@ -138,6 +138,10 @@ CASES = {
     "fill height None": lambda: bezel.fill(square(), 4, None),
     "fill transform short": lambda: bezel.fill(square(), 4, 4, transform=(1, 2)),
     "fill transform NaN": lambda: bezel.fill(square(), 4, 4, transform=(NAN, 0, 0, 1, 0, 0)),
+    # All floats: the validator's fast path.
+    "fill transform float NaN": lambda: bezel.fill(square(), 4, 4,
+                                                  transform=(1.0, 0.0, 0.0, 1.0, NAN, 0.0)),
+    "bounds transform float inf": lambda: square().bounds((1.0, 0.0, 0.0, float("inf"), 0.0, 0.0)),
     "fill transform huge": lambda: bezel.fill(square(), 4, 4, transform=(1e300, 0, 0, 1e300, 0, 0)),
     "fill rule": lambda: bezel.fill(square(), 4, 4, rule="winding"),
     "fill tolerance 0": lambda: bezel.fill(square(), 4, 4, tolerance=0),

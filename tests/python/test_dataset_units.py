@@ -1,6 +1,7 @@
 """bezel.dataset's parts on their own, without Dask: corpus reading, font lists, seeded sample
 parameters, geometry, colour mixing, shard files and the manifest."""
 import dataclasses
+import io
 import json
 import math
 import os
@@ -213,6 +214,31 @@ def test_tar_is_deterministic_and_readable(tmp_path):
     with tarfile.open(p) as tar:
         assert [(m.name, m.size, m.mtime) for m in tar.getmembers()] == [
             ("000000001.png", 3, 0), ("000000002.png", 0, 0)]
+
+
+def tarfile_reference(members):
+    """What Python's tarfile writes for the members (shards.tar_bytes builds it directly)."""
+    buf = io.BytesIO()
+    with tarfile.open(fileobj=buf, mode="w", format=tarfile.USTAR_FORMAT) as tar:
+        for name, data in members:
+            info = tarfile.TarInfo(name)
+            info.size, info.mtime, info.mode = len(data), 0, 0o644
+            info.uid = info.gid = 0
+            info.uname = info.gname = ""
+            tar.addfile(info, io.BytesIO(data))
+    return buf.getvalue()
+
+
+@pytest.mark.parametrize("sizes", [[], [0], [1], [511], [512], [513], [3, 0, 10240, 9000],
+                                   list(range(0, 12000, 997))])
+def test_tar_bytes_equal_tarfiles(sizes):
+    rng = np.random.default_rng(len(sizes))
+    members = [(f"{i:09d}.png", rng.integers(0, 256, n, dtype=np.uint8).tobytes())
+               for i, n in enumerate(sizes)]
+    members.append(("x" * 100, b"longest name"))
+    assert shards.tar_bytes(members) == tarfile_reference(members)
+    with pytest.raises(ValueError, match="ustar"):
+        shards.tar_bytes([("x" * 101, b"")])
 
 
 def test_shard_is_done_only_with_its_label_file(tmp_path):

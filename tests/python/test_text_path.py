@@ -57,3 +57,21 @@ def test_rotated_fill_keeps_the_area(dejavu):
 def test_text_path_refuses_synthetic_bold(dejavu):
     with pytest.raises(TypeError):
         dejavu.text_path("bold", bold=0.1)   # not an option of text_path
+
+
+def test_text_path_outlines_reused_across_calls_match_a_fresh_font():
+    """A Font keeps the glyph outlines text_path loaded for later calls (keyed by font, glyph,
+    size, hinting and slant): every call, in any order, equals a fresh Font's first call."""
+    cases = [dict(size=16), dict(size=24), dict(size=16, slant=0.2), dict(size=16, hinting="full"),
+             dict(size=16)]
+    text = "Hamburgefonstiv Hg"
+    shared = bezel.Font(DEJAVU)
+    svgs = []
+    for options in cases:
+        got = shared.text_path(text, **options)
+        fresh = bezel.Font(DEJAVU).text_path(text, **options)
+        assert got.path.svg == fresh.path.svg, options
+        assert (got.width, got.height, got.ink_bounds) == (fresh.width, fresh.height,
+                                                           fresh.ink_bounds), options
+        svgs.append(got.path.svg)
+    assert len(set(svgs[:4])) == 4 and svgs[4] == svgs[0]

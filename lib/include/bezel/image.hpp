@@ -382,16 +382,19 @@ enum class PngColor : std::uint8_t { Gray, Rgb, Rgba };
 // How hard the PNG writers deflate: every level writes the same pixels (no row filter; PNG
 // viewers see no difference), they differ in time and file size. Rows are never filtered: on
 // text pages (long runs of the paper's byte) filtering made files larger at every level.
-//   Fast:    libpng writer: zlib level 1. Banded gray writer: igzip level 1, each 64-row band
-//            deflated with an empty history (the cheapest deflate there is here; largest file).
-//   Default: libpng writer: zlib level 1 (zlib's next levels cost several times the time).
-//            Banded gray writer: igzip level 2, each band primed with the 32 KiB of scanlines
-//            above it (a deflate window's worth), so bands find their matches in the lines
-//            above as one stream would: on a page of text ~14 % smaller than Fast for ~25 %
-//            more deflate time, still spread over the threads.
-//   Small:   zlib level 6 (zlib's and libpng's default), one stream on the calling thread, for
-//            both writers (the banded writer falls back to libpng). Levels 7-9 made text pages
-//            at most 2 % smaller for 1.2-14x the time.
+//   Fast:    igzip level 1: images on one thread as one stream; the banded gray writer's
+//            64-row bands each deflated with an empty history (the cheapest deflate there is
+//            here; largest file).
+//   Default: igzip level 2: images on one thread as one stream (a few % smaller than Fast for
+//            about the same time on small images). Banded gray writer: each band primed with
+//            the 32 KiB of scanlines above it (a deflate window's worth), so bands find their
+//            matches in the lines above as one stream would: on a page of text ~14 % smaller
+//            than Fast for ~25 % more deflate time, still spread over the threads.
+//   Small:   zlib level 6 through libpng (zlib's and libpng's default), one stream on the
+//            calling thread, for every writer (the banded writer falls back to it). Levels 7-9
+//            made text pages at most 2 % smaller for 1.2-14x the time.
+//   (igzip counts its input in 32 bits: an image of more than 2 GiB of scanlines, which only
+//   the largest RGBA sizes reach, is deflated by zlib at level 1 instead.)
 enum class PngCompression : std::uint8_t { Fast, Default, Small };
 struct PngOptions {
     PngCompression compression = PngCompression::Default;

@@ -1,9 +1,13 @@
-// PNG encoding of colour images and masks into memory through libpng's low-level API, which (unlike
-// the simplified png_image API png.cpp uses for reading) lets us pick the zlib level and filter.
+// PNG encoding of colour images and masks into memory on one thread: Fast and Default deflate
+// the scanlines as one igzip stream (png_parallel.cpp writes the file), Small goes through
+// libpng's low-level API, which (unlike the simplified png_image API png.cpp uses for reading)
+// lets us pick the zlib level (6) and filter. On a 1075×68 gray text line, igzip level 1 or 2
+// takes about a fifth of zlib level 1's time for a slightly smaller file (docs/perf-log.md,
+// "Dataset speed round").
 //
-// Fast and Default: zlib level 1, Small: level 6 (image.hpp); never a row filter (no per-row
-// filter search). Measured on the benchmark page (tools/bench/render_page.txt, 716×2361 gray): no filter encodes faster than
-// SUB and gives a smaller file (266 KB against 285 KB: the flat background is long runs of one
+// Never a row filter (no per-row filter search). Measured on the benchmark page
+// (tools/bench/render_page.txt, 716×2361 gray): no filter encodes faster than SUB and gives a
+// smaller file (266 KB against 285 KB: the flat background is long runs of one
 // byte either way, and SUB turns glyph edges into more distinct values); Z_RLE was larger
 // (548 KB) and no faster.
 //
@@ -22,6 +26,7 @@
 #include <string>
 
 #include "bezel/image.hpp"
+#include "image/png_igzip.hpp"
 #include "image/srgb.hpp"
 
 namespace bezel {
@@ -123,15 +128,34 @@ Status check_size(int width, int height) {
     return ok_status();
 }
 
+// Bytes per pixel of the PNG colour types written here (gray, RGB, RGBA).
+std::size_t channels(int color_type) {
+    return color_type == PNG_COLOR_TYPE_GRAY ? 1 : color_type == PNG_COLOR_TYPE_RGB ? 3 : 4;
+}
+
 Expected<std::vector<std::uint8_t>> encode(int width, int height, int color_type,
                                            const void* source, RowFn row_fn,
                                            std::size_t scratch_bytes, PngCompression compression) {
     if (auto ok = check_size(width, height); !ok) return ok.error();
+    std::vector<std::uint8_t> scratch(scratch_bytes);
+    const std::size_t row_bytes = channels(color_type) * static_cast<std::size_t>(width);
+    if (compression != PngCompression::Small &&
+        (row_bytes + 1) * static_cast<std::size_t>(height) <= png_detail::kMaxIgzipScanlineBytes) {
+        // igzip, one stream: the scanlines gathered as the IDAT holds them (filter byte 0, then
+        // the row), then deflated in one call.
+        std::vector<std::uint8_t> scanlines((row_bytes + 1) * static_cast<std::size_t>(height));
+        for (int y = 0; y < height; ++y) {
+            std::uint8_t* r = scanlines.data() + static_cast<std::size_t>(y) * (row_bytes + 1);
+            r[0] = 0;
+            std::memcpy(r + 1, row_fn(source, y, scratch.data()), row_bytes);
+        }
+        return png_detail::encode_png_igzip(width, height, static_cast<std::uint8_t>(color_type),
+                                            scanlines.data(), scanlines.size(), compression);
+    }
     std::vector<std::uint8_t> out;
     // Text pages compress to about 1/6 of a byte per pixel at level 1: reserving that much (and
     // a little) saves most of the regrowth copies.
     out.reserve(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) / 4 + 4096);
-    std::vector<std::uint8_t> scratch(scratch_bytes);
     WriteState st{&out, {}};
     if (!encode_rows(st, width, height, color_type, source, row_fn, scratch.data(),
                      zlib_level(compression)))

@@ -1,5 +1,5 @@
 // encode_png_gray(mask, threads) and PngGrayStream: a PNG written by hand, so the deflating can
-// be split across threads (libpng deflates one stream on the calling thread only), can start on
+// be split across threads (one zlib or igzip stream is one thread's work), can start on
 // the top of a page while its bottom is still being drawn, and can use a faster deflater than
 // zlib: ISA-L's igzip (Debian libisal-dev).
 //
@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "bezel/image.hpp"
+#include "image/png_igzip.hpp"
 
 namespace bezel {
 
@@ -112,8 +113,15 @@ public:
             std::memcpy(r + 1, mask.row(y), static_cast<std::size_t>(mask.width));
         }
         const std::size_t history = static_cast<std::size_t>(history_rows) * row_bytes;
-        const std::uint8_t* in = raw_.data.get() + history;
-        const std::size_t in_bytes = raw_.size - history;
+        deflate(raw_.data.get() + history, raw_.size - history, history, last, band);
+    }
+
+    // Deflates in[0, in_bytes) into band (length, Adler-32, deflated bytes; ok on success),
+    // primed with the `history` bytes before `in` (at most a window's worth are used). Every
+    // block but the last ends on a byte boundary (a sync flush); with `last`, the final block
+    // closes the deflate stream.
+    void deflate(const std::uint8_t* in, std::size_t in_bytes, std::size_t history, bool last,
+                 Band& band) {
         band.length = in_bytes;
         band.adler = isal_adler32(1, in, in_bytes);
         // Room for stored blocks (5 bytes per 64 KiB) should nothing compress; grown if not.
@@ -181,13 +189,45 @@ void chunk(std::vector<std::uint8_t>& out, const char type[4], Fill&& fill) {
                    crc32(0L, out.data() + at + 4, static_cast<uInt>(length + 4))));
 }
 
+// The PNG file around one zlib stream made of the deflate pieces bands[0, n) in order (the
+// last one holding the final block) and the Adler-32 of all their input: the signature, IHDR
+// (8 bits a sample, `color_type`, no interlace), one IDAT, IEND.
+std::vector<std::uint8_t> png_file(int width, int height, std::uint8_t color_type,
+                                   PngCompression compression, const Band* bands, int n,
+                                   uLong adler) {
+    std::size_t total = 0;
+    for (int k = 0; k < n; ++k) total += bands[k].deflated.size;
+    std::vector<std::uint8_t> out;
+    out.reserve(total + 64);
+    static const std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    out.insert(out.end(), kSignature, kSignature + 8);
+    chunk(out, "IHDR", [&](std::vector<std::uint8_t>& o) {
+        put32(o, static_cast<std::uint32_t>(width));
+        put32(o, static_cast<std::uint32_t>(height));
+        // depth, colour type, deflate, filter method 0, no interlace
+        const std::uint8_t rest[5] = {8, color_type, 0, 0, 0};
+        o.insert(o.end(), rest, rest + 5);
+    });
+    chunk(out, "IDAT", [&](std::vector<std::uint8_t>& o) {
+        o.push_back(0x78);  // deflate, 32 KiB window
+        // FLEVEL (informative): fastest (0x01) or fast (0x5E); (0x78·256 + FLG) % 31 == 0.
+        o.push_back(compression == PngCompression::Fast ? 0x01 : 0x5E);
+        for (int k = 0; k < n; ++k)
+            o.insert(o.end(), bands[k].deflated.data.get(),
+                     bands[k].deflated.data.get() + bands[k].deflated.size);
+        put32(o, static_cast<std::uint32_t>(adler));
+    });
+    chunk(out, "IEND", [](std::vector<std::uint8_t>&) {});
+    return out;
+}
+
 }  // namespace
 
 // The bands' shared state: bands [0, queued) may be taken, [0, taken) have been.
 struct PngGrayStream::Impl {
     ConstMaskView page;
     PngOptions options;
-    bool banded = false;  // false: finish() is the one-thread libpng writer
+    bool banded = false;  // false: finish() is the one-thread writer (encode_png_gray)
     bool finished = false;
     int next_band_end = 0;  // rows_final's fast path: the row count that completes band `queued`
     std::vector<Band> bands;
@@ -287,38 +327,33 @@ Expected<std::vector<std::uint8_t>> PngGrayStream::finish() {
 }
 
 Expected<std::vector<std::uint8_t>> PngGrayStream::Impl::assemble() {
-    const ConstMaskView& mask = page;
     const int n = static_cast<int>(bands.size());
     uLong adler = bands[0].adler;
-    std::size_t total = 0;
     for (int k = 0; k < n; ++k) {
         if (!bands[k].ok) return Error{"PNG encoding failed: zlib could not deflate the image"};
         if (k > 0)
             adler = adler32_combine(adler, bands[k].adler, static_cast<z_off_t>(bands[k].length));
-        total += bands[k].deflated.size;
     }
-
-    std::vector<std::uint8_t> out;
-    out.reserve(total + 64);
-    static const std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-    out.insert(out.end(), kSignature, kSignature + 8);
-    chunk(out, "IHDR", [&](std::vector<std::uint8_t>& o) {
-        put32(o, static_cast<std::uint32_t>(mask.width));
-        put32(o, static_cast<std::uint32_t>(mask.height));
-        const std::uint8_t rest[5] = {8, 0, 0, 0, 0};  // depth, gray, deflate, filter 0, no interlace
-        o.insert(o.end(), rest, rest + 5);
-    });
-    chunk(out, "IDAT", [&](std::vector<std::uint8_t>& o) {
-        o.push_back(0x78);  // deflate, 32 KiB window
-        // FLEVEL (informative): fastest (0x01) or fast (0x5E); (0x78·256 + FLG) % 31 == 0.
-        o.push_back(options.compression == PngCompression::Fast ? 0x01 : 0x5E);
-        for (const Band& b : bands)
-            o.insert(o.end(), b.deflated.data.get(), b.deflated.data.get() + b.deflated.size);
-        put32(o, static_cast<std::uint32_t>(adler));
-    });
-    chunk(out, "IEND", [](std::vector<std::uint8_t>&) {});
-    return out;
+    return png_file(page.width, page.height, /*color_type=*/0, options.compression,
+                    bands.data(), n, adler);
 }
+
+namespace png_detail {
+
+Expected<std::vector<std::uint8_t>> encode_png_igzip(int width, int height,
+                                                     std::uint8_t color_type,
+                                                     const std::uint8_t* scanlines,
+                                                     std::size_t bytes,
+                                                     PngCompression compression) {
+    Deflater deflater(compression);
+    Band band;
+    band.y1 = height;
+    deflater.deflate(scanlines, bytes, /*history=*/0, /*last=*/true, band);
+    if (!band.ok) return Error{"PNG encoding failed: igzip could not deflate the image"};
+    return png_file(width, height, color_type, compression, &band, 1, band.adler);
+}
+
+}  // namespace png_detail
 
 Expected<std::vector<std::uint8_t>> encode_png_gray(ConstMaskView mask, int threads,
                                                     const PngOptions& options) {
