@@ -393,8 +393,9 @@ enum class PngColor : std::uint8_t { Gray, Rgb, Rgba };
 //   Small:   zlib level 6 through libpng (zlib's and libpng's default), one stream on the
 //            calling thread, for every writer (the banded writer falls back to it). Levels 7-9
 //            made text pages at most 2 % smaller for 1.2-14x the time.
-//   (igzip counts its input in 32 bits: an image of more than 2 GiB of scanlines, which only
-//   the largest RGBA sizes reach, is deflated by zlib at level 1 instead.)
+//   (The one-stream writer holds a copy of every scanline while it deflates: an image of more
+//   than 64 MiB of scanlines, a 4096 px square RGBA page, streams through libpng and zlib at
+//   level 1 instead, with a buffer of one row.)
 enum class PngCompression : std::uint8_t { Fast, Default, Small };
 struct PngOptions {
     PngCompression compression = PngCompression::Default;

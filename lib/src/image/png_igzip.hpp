@@ -10,9 +10,11 @@
 
 namespace bezel::png_detail {
 
-// The most scanline bytes the one-stream writer takes: igzip counts its input in 32 bits, and
-// a 32768 px square RGBA image (kMaxImageDim) holds 4 GiB. Larger images go through libpng.
-inline constexpr std::size_t kMaxIgzipScanlineBytes = std::size_t{1} << 31;
+// The most scanline bytes the one-stream writer takes. It deflates a copy of every scanline at
+// once, so this bounds the memory an encode adds to the image's own: a 4096 px square RGBA page
+// (64 MiB). Larger images stream through libpng row by row (zlib level 1). It also keeps the
+// input within igzip's 32-bit counts.
+inline constexpr std::size_t kMaxIgzipScanlineBytes = std::size_t{64} << 20;
 
 // A PNG (8 bits a sample, PNG colour type `color_type`, no interlace) of `height` scanlines of
 // `width` pixels held in scanlines[0, bytes): each row its filter byte, then its samples, as
