@@ -27,9 +27,8 @@ _worker_cache: dict = {}
 
 def library_limit(name: str) -> float:
     """One of the library's named limits (bezel/limits.hpp), as the binding reports them."""
-    import bezel
-    limits = getattr(bezel, "limits", None) or bezel._bezel.limits
-    return limits[name]
+    from .._check import LIMITS
+    return LIMITS[name]
 
 
 def worker_cached(key, make):
